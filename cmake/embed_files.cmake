@@ -1,5 +1,6 @@
 # Script mode: writes a C++ table {name, bytes} for FILES. Names are relative to kernels/ for
 # kernel sources and "radcl/<file>" for shared headers, i.e. exactly how kernels #include them.
+string(REPLACE "|" ";" FILES "${FILES}")
 set(_body "")
 set(_count 0)
 foreach(f IN LISTS FILES)

@@ -23,22 +23,26 @@ typedef struct rc_float4 {
 
 /* Radiance's primitive types, in the order of Radiance 5.4a's type table (the frozen-octree
  * table lists them by name; readers map names, never rely on these numbers in files). */
-#define RADCL_OBJECT_TYPES(X)                                                                  \
-  X(POLYGON, "polygon") X(CONE, "cone") X(SPHERE, "sphere") X(TEXFUNC, "texfunc")               \
-  X(RING, "ring") X(CYLINDER, "cylinder") X(INSTANCE, "instance") X(CUP, "cup")                 \
-  X(BUBBLE, "bubble") X(TUBE, "tube") X(MESH, "mesh") X(ALIAS, "alias")                         \
-  X(PLASTIC, "plastic") X(METAL, "metal") X(GLASS, "glass") X(TRANS, "trans")                   \
-  X(DIELECTRIC, "dielectric") X(PLASTIC2, "plastic2") X(METAL2, "metal2") X(TRANS2, "trans2")   \
-  X(INTERFACE, "interface") X(PLASFUNC, "plasfunc") X(METFUNC, "metfunc")                       \
-  X(BRIGHTFUNC, "brightfunc") X(BRIGHTDATA, "brightdata") X(BRIGHTTEXT, "brighttext")           \
-  X(COLORPICT, "colorpict") X(GLOW, "glow") X(SOURCE, "source") X(LIGHT, "light")               \
-  X(ILLUM, "illum") X(SPOTLIGHT, "spotlight") X(MIST, "mist") X(MIRROR, "mirror")               \
-  X(TRANSFUNC, "transfunc") X(BRTDFUNC, "BRTDfunc") X(BSDF, "BSDF") X(ABSDF, "aBSDF")           \
-  X(PLASDATA, "plasdata") X(METDATA, "metdata") X(TRANSDATA, "transdata")                       \
-  X(COLORFUNC, "colorfunc") X(ANTIMATTER, "antimatter") X(COLORDATA, "colordata")               \
-  X(COLORTEXT, "colortext") X(TEXDATA, "texdata") X(MIXFUNC, "mixfunc") X(MIXDATA, "mixdata")   \
-  X(MIXTEXT, "mixtext") X(MIXPICT, "mixpict") X(PRISM1, "prism1") X(PRISM2, "prism2")           \
-  X(ASHIK2, "ashik2")
+#define RADCL_OBJECT_TYPES(X)                                                                      \
+  X(POLYGON, "polygon")                                                                            \
+  X(CONE, "cone") X(SPHERE, "sphere") X(TEXFUNC, "texfunc") X(RING, "ring") X(                     \
+      CYLINDER, "cylinder") X(INSTANCE, "instance") X(CUP, "cup") X(BUBBLE, "bubble")              \
+      X(TUBE, "tube") X(MESH, "mesh") X(ALIAS, "alias") X(PLASTIC, "plastic") X(METAL, "metal") X( \
+          GLASS, "glass") X(TRANS, "trans") X(DIELECTRIC, "dielectric") X(PLASTIC2, "plastic2")    \
+          X(METAL2, "metal2") X(TRANS2, "trans2") X(INTERFACE, "interface")                        \
+              X(PLASFUNC, "plasfunc") X(METFUNC, "metfunc") X(BRIGHTFUNC, "brightfunc") X(         \
+                  BRIGHTDATA, "brightdata") X(BRIGHTTEXT, "brighttext") X(COLORPICT, "colorpict")  \
+                  X(GLOW, "glow") X(SOURCE, "source") X(LIGHT, "light") X(ILLUM, "illum")          \
+                      X(SPOTLIGHT, "spotlight") X(MIST, "mist") X(MIRROR, "mirror")                \
+                          X(TRANSFUNC, "transfunc") X(BRTDFUNC, "BRTDfunc") X(BSDF, "BSDF")        \
+                              X(ABSDF, "aBSDF") X(PLASDATA, "plasdata") X(METDATA, "metdata")      \
+                                  X(TRANSDATA, "transdata") X(COLORFUNC, "colorfunc")              \
+                                      X(ANTIMATTER, "antimatter")                                  \
+                                          X(COLORDATA, "colordata") X(COLORTEXT, "colortext")      \
+                                              X(TEXDATA, "texdata") X(MIXFUNC, "mixfunc")          \
+                                                  X(MIXDATA, "mixdata") X(MIXTEXT, "mixtext")      \
+                                                      X(MIXPICT, "mixpict") X(PRISM1, "prism1")    \
+                                                          X(PRISM2, "prism2") X(ASHIK2, "ashik2")
 
 #define RADCL_ENUM_ENTRY(id, name) RC_OBJ_##id,
 enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
@@ -88,12 +92,13 @@ typedef struct rc_rng_key {
 /* Every struct above with every field, for the host/device layout test (rc_float4's members
  * are vector components on the device, which have no address: only its size is compared). */
 #define RADCL_LAYOUT_STRUCTS(S) S(rc_float4) S(rc_ray) S(rc_hit) S(rc_shadow) S(rc_rng_key)
-#define RADCL_LAYOUT_FIELDS(F)                                                                 \
-  F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
-  F(rc_ray, flags) F(rc_ray, sample)                                                           \
-  F(rc_hit, ng) F(rc_hit, uvw) F(rc_hit, object) F(rc_hit, prim) F(rc_hit, inst) F(rc_hit, pad) \
-  F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, primary)              \
-  F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1)                                   \
-  F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)
+#define RADCL_LAYOUT_FIELDS(F)                                                                     \
+  F(rc_ray, org)                                                                                   \
+  F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags)              \
+      F(rc_ray, sample) F(rc_hit, ng) F(rc_hit, uvw) F(rc_hit, object) F(rc_hit, prim)             \
+          F(rc_hit, inst) F(rc_hit, pad) F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) \
+              F(rc_shadow, primary) F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1)     \
+                  F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth)                \
+                      F(rc_rng_key, seed)
 
 #endif /* RADCL_DEVICE_TYPES_H */

@@ -4,8 +4,8 @@
 #include <cstring>
 #include <string>
 
-#include "radcl_commands.h"
 #include "radcl/util/error.h"
+#include "radcl_commands.h"
 
 namespace {
 
@@ -37,4 +37,6 @@ int radcl_main(int argc, char** argv) {
 
 } // namespace
 
-int main(int argc, char** argv) { return radcl::run_main("radcl", radcl_main, argc, argv); }
+int main(int argc, char** argv) {
+  return radcl::run_main("radcl", radcl_main, argc, argv);
+}

@@ -12,10 +12,18 @@ void print_warning(const std::string& msg) {
 WarningSink g_sink = print_warning;
 } // namespace
 
-void set_warning_sink(WarningSink sink) { g_sink = sink ? sink : print_warning; }
-void warning(const std::string& msg) { g_sink(msg); }
-void set_program_name(const std::string& name) { g_program = name; }
-const std::string& program_name() { return g_program; }
+void set_warning_sink(WarningSink sink) {
+  g_sink = sink ? sink : print_warning;
+}
+void warning(const std::string& msg) {
+  g_sink(msg);
+}
+void set_program_name(const std::string& name) {
+  g_program = name;
+}
+const std::string& program_name() {
+  return g_program;
+}
 
 int run_main(const char* progname, int (*body)(int, char**), int argc, char** argv) {
   set_program_name(progname);

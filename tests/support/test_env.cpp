@@ -12,10 +12,18 @@ std::string env_or(const char* name, const char* fallback) {
 }
 } // namespace
 
-std::string data_dir() { return env_or("RADCL_TEST_DATA", "tests/data"); }
-std::string bin_dir() { return env_or("RADCL_BIN", "build/bin"); }
-std::string source_dir() { return env_or("RADCL_SOURCE_DIR", "."); }
-std::string data(const std::string& name) { return data_dir() + "/" + name; }
+std::string data_dir() {
+  return env_or("RADCL_TEST_DATA", "tests/data");
+}
+std::string bin_dir() {
+  return env_or("RADCL_BIN", "build/bin");
+}
+std::string source_dir() {
+  return env_or("RADCL_SOURCE_DIR", ".");
+}
+std::string data(const std::string& name) {
+  return data_dir() + "/" + name;
+}
 
 int run_command(const std::string& cmd, std::string* out) {
   std::string full = cmd + " 2>&1";

@@ -5,9 +5,9 @@
 
 namespace radcl::test {
 
-std::string data_dir();   // tests/data
-std::string bin_dir();    // build/bin
-std::string source_dir(); // repository root
+std::string data_dir();                    // tests/data
+std::string bin_dir();                     // build/bin
+std::string source_dir();                  // repository root
 std::string data(const std::string& name); // data_dir() + "/" + name
 
 // Runs a shell command, returns its exit status; stdout and stderr captured into `out`.

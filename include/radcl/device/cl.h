@@ -17,9 +17,9 @@ void cl_check(cl_int status, const char* call, const char* file, int line);
 
 #define RADCL_CL(call) ::radcl::device::cl_check((call), #call, __FILE__, __LINE__)
 // For creators that return a handle and report through an out-parameter.
-#define RADCL_CL_CREATE(var, expr)                                                             \
-  do {                                                                                         \
-    cl_int radcl_status_ = CL_SUCCESS;                                                         \
-    var = (expr);                                                                              \
-    ::radcl::device::cl_check(radcl_status_, #expr, __FILE__, __LINE__);                       \
+#define RADCL_CL_CREATE(var, expr)                                                                 \
+  do {                                                                                             \
+    cl_int radcl_status_ = CL_SUCCESS;                                                             \
+    var = (expr);                                                                                  \
+    ::radcl::device::cl_check(radcl_status_, #expr, __FILE__, __LINE__);                           \
   } while (0)

@@ -1,0 +1,58 @@
+// Device buffers. On a device that shares the host's memory (PoCL on the CPU) a buffer wraps a
+// page-aligned host allocation (CL_MEM_USE_HOST_PTR): reads and writes are plain copies in host
+// memory around a map/unmap that only synchronises, and no transfer ever happens. On a GPU the
+// buffer lives in device memory and reads/writes are transfers.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+struct _cl_mem;
+
+namespace radcl::device {
+
+class Context;
+
+class Buffer {
+public:
+  Buffer() = default;
+  Buffer(Context& ctx, std::size_t bytes);
+  ~Buffer();
+  Buffer(Buffer&& o) noexcept;
+  Buffer& operator=(Buffer&& o) noexcept;
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  std::size_t size() const { return bytes_; }
+  bool zero_copy() const { return host_ != nullptr; }
+  _cl_mem* handle() const { return mem_; }
+
+  void write(const void* src, std::size_t bytes, std::size_t offset = 0);
+  void read(void* dst, std::size_t bytes, std::size_t offset = 0) const;
+
+  template <class T> static Buffer from(Context& ctx, const std::vector<T>& v) {
+    Buffer b(ctx, v.empty() ? sizeof(T) : v.size() * sizeof(T));
+    if (!v.empty()) b.write(v.data(), v.size() * sizeof(T));
+    return b;
+  }
+  template <class T> std::vector<T> to_vector(std::size_t n) const {
+    std::vector<T> v(n);
+    if (n) read(v.data(), n * sizeof(T));
+    return v;
+  }
+
+  // Maps the whole buffer for host access (blocking); returns the host pointer. For a
+  // zero-copy buffer this is the buffer's own host allocation.
+  void* map();
+  void unmap(void* ptr);
+  const void* host_allocation() const { return host_; }
+
+private:
+  Context* ctx_ = nullptr;
+  _cl_mem* mem_ = nullptr;
+  void* host_ = nullptr;
+  std::size_t bytes_ = 0;
+  void release();
+};
+
+} // namespace radcl::device

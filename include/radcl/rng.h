@@ -1,0 +1,69 @@
+/* Counter-based random numbers: Philox4x32-10 (Salmon et al., "Parallel random numbers: as easy
+ * as 1, 2, 3", SC 2011). Plain C shared by host and kernels, so both produce the same bits.
+ * A value depends only on (primary ray, sample, depth, seed) and a dimension index, never on
+ * wave size, thread count or device: that is what makes -u- runs repeatable everywhere. */
+#ifndef RADCL_RNG_H
+#define RADCL_RNG_H
+
+#include "radcl/device_types.h"
+
+#define RC_RNG_INLINE static inline
+
+typedef struct rc_u32x4 {
+  rc_u32 v[4];
+} rc_u32x4;
+
+#define RC_PHILOX_M0 0xD2511F53u
+#define RC_PHILOX_M1 0xCD9E8D57u
+#define RC_PHILOX_W0 0x9E3779B9u
+#define RC_PHILOX_W1 0xBB67AE85u
+
+RC_RNG_INLINE rc_u32x4 rc_philox4x32(rc_u32x4 c, rc_u32 k0, rc_u32 k1) {
+  for (int r = 0; r < 10; ++r) {
+    rc_u64 p0 = (rc_u64)RC_PHILOX_M0 * (rc_u64)c.v[0];
+    rc_u64 p1 = (rc_u64)RC_PHILOX_M1 * (rc_u64)c.v[2];
+    rc_u32 hi0 = (rc_u32)(p0 >> 32), lo0 = (rc_u32)p0;
+    rc_u32 hi1 = (rc_u32)(p1 >> 32), lo1 = (rc_u32)p1;
+    rc_u32x4 n;
+    n.v[0] = hi1 ^ c.v[1] ^ k0;
+    n.v[1] = lo1;
+    n.v[2] = hi0 ^ c.v[3] ^ k1;
+    n.v[3] = lo0;
+    c = n;
+    k0 += RC_PHILOX_W0;
+    k1 += RC_PHILOX_W1;
+  }
+  return c;
+}
+
+/* Four independent 32-bit values for dimensions 4*block .. 4*block+3 of this key. */
+RC_RNG_INLINE rc_u32x4 rc_random_bits(rc_rng_key key, rc_u32 block) {
+  rc_u32x4 c;
+  c.v[0] = key.primary;
+  c.v[1] = key.sample;
+  c.v[2] = key.depth;
+  c.v[3] = block;
+  return rc_philox4x32(c, key.seed, 0x5EED1DCAu);
+}
+
+/* 32 random bits -> float in [0,1): the top 24 bits scaled exactly, same on every device. */
+RC_RNG_INLINE float rc_bits_to_unit(rc_u32 x) {
+  return (float)(x >> 8) * (1.0f / 16777216.0f);
+}
+
+/* One uniform number in [0,1) for dimension `dim` of this key. */
+RC_RNG_INLINE float rc_random(rc_rng_key key, rc_u32 dim) {
+  rc_u32x4 b = rc_random_bits(key, dim >> 2);
+  return rc_bits_to_unit(b.v[dim & 3u]);
+}
+
+RC_RNG_INLINE rc_rng_key rc_make_key(rc_u32 primary, rc_u32 sample, rc_u32 depth, rc_u32 seed) {
+  rc_rng_key k;
+  k.primary = primary;
+  k.sample = sample;
+  k.depth = depth;
+  k.seed = seed;
+  return k;
+}
+
+#endif /* RADCL_RNG_H */

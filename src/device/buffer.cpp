@@ -1,0 +1,96 @@
+#include "radcl/device/buffer.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <utility>
+
+#include "radcl/device/cl.h"
+#include "radcl/device/context.h"
+#include "radcl/util/error.h"
+
+namespace radcl::device {
+namespace {
+constexpr std::size_t kAlign = 4096; // page alignment lets the runtime use the memory directly
+}
+
+Buffer::Buffer(Context& ctx, std::size_t bytes) : ctx_(&ctx), bytes_(bytes) {
+  if (bytes == 0) throw FatalError("zero-sized device buffer");
+  if (ctx.zero_copy()) {
+    host_ = std::aligned_alloc(kAlign, (bytes + kAlign - 1) / kAlign * kAlign);
+    if (!host_) throw FatalError("out of memory allocating " + std::to_string(bytes) + " bytes");
+    try {
+      RADCL_CL_CREATE(mem_, clCreateBuffer(ctx.handle(), CL_MEM_READ_WRITE | CL_MEM_USE_HOST_PTR,
+                                           bytes, host_, &radcl_status_));
+    } catch (...) {
+      std::free(host_);
+      throw;
+    }
+  } else {
+    RADCL_CL_CREATE(
+        mem_, clCreateBuffer(ctx.handle(), CL_MEM_READ_WRITE, bytes, nullptr, &radcl_status_));
+  }
+}
+
+void Buffer::release() {
+  if (mem_) clReleaseMemObject(mem_);
+  std::free(host_);
+  mem_ = nullptr;
+  host_ = nullptr;
+}
+
+Buffer::~Buffer() {
+  release();
+}
+
+Buffer::Buffer(Buffer&& o) noexcept
+    : ctx_(o.ctx_), mem_(std::exchange(o.mem_, nullptr)), host_(std::exchange(o.host_, nullptr)),
+      bytes_(std::exchange(o.bytes_, 0)) {}
+
+Buffer& Buffer::operator=(Buffer&& o) noexcept {
+  if (this != &o) {
+    release();
+    ctx_ = o.ctx_;
+    mem_ = std::exchange(o.mem_, nullptr);
+    host_ = std::exchange(o.host_, nullptr);
+    bytes_ = std::exchange(o.bytes_, 0);
+  }
+  return *this;
+}
+
+void* Buffer::map() {
+  void* p = nullptr;
+  RADCL_CL_CREATE(p, clEnqueueMapBuffer(ctx_->queue(), mem_, CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0,
+                                        bytes_, 0, nullptr, nullptr, &radcl_status_));
+  return p;
+}
+
+void Buffer::unmap(void* ptr) {
+  RADCL_CL(clEnqueueUnmapMemObject(ctx_->queue(), mem_, ptr, 0, nullptr, nullptr));
+}
+
+void Buffer::write(const void* src, std::size_t bytes, std::size_t offset) {
+  if (offset + bytes > bytes_) throw FatalError("device buffer write out of range");
+  if (host_) {
+    void* p = map();
+    std::memcpy(static_cast<char*>(p) + offset, src, bytes);
+    unmap(p);
+  } else {
+    RADCL_CL(clEnqueueWriteBuffer(ctx_->queue(), mem_, CL_TRUE, offset, bytes, src, 0, nullptr,
+                                  nullptr));
+  }
+}
+
+void Buffer::read(void* dst, std::size_t bytes, std::size_t offset) const {
+  if (offset + bytes > bytes_) throw FatalError("device buffer read out of range");
+  if (host_) {
+    auto* self = const_cast<Buffer*>(this);
+    void* p = self->map();
+    std::memcpy(dst, static_cast<const char*>(p) + offset, bytes);
+    self->unmap(p);
+  } else {
+    RADCL_CL(
+        clEnqueueReadBuffer(ctx_->queue(), mem_, CL_TRUE, offset, bytes, dst, 0, nullptr, nullptr));
+  }
+}
+
+} // namespace radcl::device

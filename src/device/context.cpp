@@ -1,0 +1,52 @@
+#include "radcl/device/context.h"
+
+#include <mutex>
+
+#include "radcl/device/cl.h"
+#include "radcl/device/program.h"
+
+namespace radcl::device {
+
+Context::Context(const DeviceInfo& device) : info_(device) {
+  cl_device_id id = static_cast<cl_device_id>(device.id);
+  cl_context_properties props[] = {CL_CONTEXT_PLATFORM,
+                                   reinterpret_cast<cl_context_properties>(device.platform), 0};
+  RADCL_CL_CREATE(context_, clCreateContext(props, 1, &id, nullptr, nullptr, &radcl_status_));
+  try {
+    RADCL_CL_CREATE(queue_,
+                    clCreateCommandQueueWithProperties(context_, id, nullptr, &radcl_status_));
+  } catch (...) {
+    clReleaseContext(context_);
+    throw;
+  }
+}
+
+Context::~Context() {
+  if (queue_) {
+    clFinish(queue_);
+    clReleaseCommandQueue(queue_);
+  }
+  if (context_) clReleaseContext(context_);
+}
+
+void Context::run(Kernel& kernel, std::size_t items, std::size_t group) {
+  if (items == 0) return;
+  if (group == 0) group = kernel.preferred_group_size();
+  if (group == 0) group = 1;
+  std::size_t global = (items + group - 1) / group * group;
+  RADCL_CL(clEnqueueNDRangeKernel(queue_, kernel.handle(), 1, nullptr, &global, &group, 0, nullptr,
+                                  nullptr));
+}
+
+void Context::finish() {
+  RADCL_CL(clFinish(queue_));
+}
+
+Context& default_context() {
+  static std::once_flag once;
+  static std::unique_ptr<Context> ctx;
+  std::call_once(once, [] { ctx = std::make_unique<Context>(select_device()); });
+  return *ctx;
+}
+
+} // namespace radcl::device

@@ -1,0 +1,47 @@
+// Buffers round-trip data; on a host-memory device (PoCL) they are zero-copy: the mapped
+// pointer is the buffer's own host allocation.
+#include <gtest/gtest.h>
+#include <numeric>
+#include <vector>
+
+#include "device_fixture.h"
+#include "radcl/device/buffer.h"
+#include "radcl/util/error.h"
+
+using namespace radcl::device;
+
+TEST(Buffer, RoundTripWithOffsets) {
+  Context& ctx = test_context();
+  std::vector<int> v(1000);
+  std::iota(v.begin(), v.end(), -500);
+  Buffer b = Buffer::from(ctx, v);
+  EXPECT_EQ(b.to_vector<int>(1000), v);
+  int patch[3] = {7, 8, 9};
+  b.write(patch, sizeof patch, 10 * sizeof(int));
+  std::vector<int> w = b.to_vector<int>(1000);
+  EXPECT_EQ(w[9], v[9]);
+  EXPECT_EQ(w[10], 7);
+  EXPECT_EQ(w[12], 9);
+  EXPECT_EQ(w[13], v[13]);
+  EXPECT_THROW(b.write(patch, sizeof patch, 999 * sizeof(int)), radcl::FatalError);
+  EXPECT_THROW(Buffer(ctx, 0), radcl::FatalError);
+}
+
+TEST(Buffer, ZeroCopyOnHostMemoryDevices) {
+  Context& ctx = test_context();
+  Buffer b(ctx, 1 << 20);
+  EXPECT_EQ(b.zero_copy(), ctx.info().host_unified_memory);
+  if (!b.zero_copy()) GTEST_SKIP() << ctx.info().name << " has its own memory";
+  void* p = b.map();
+  EXPECT_EQ(p, b.host_allocation());
+  b.unmap(p);
+}
+
+TEST(Buffer, MoveTransfersOwnership) {
+  Context& ctx = test_context();
+  Buffer a(ctx, 64);
+  auto* h = a.handle();
+  Buffer b(std::move(a));
+  EXPECT_EQ(b.handle(), h);
+  EXPECT_EQ(a.handle(), nullptr);
+}

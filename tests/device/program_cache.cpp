@@ -1,0 +1,109 @@
+// Program binaries are cached on disk by a key over source, options and device; a second build
+// of the same program loads the binary, a changed option or source does not.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+
+#include "device_fixture.h"
+#include "radcl/device/buffer.h"
+#include "radcl/device/program.h"
+#include "radcl/util/error.h"
+
+using namespace radcl::device;
+namespace fs = std::filesystem;
+
+namespace {
+// Each test gets an empty cache folder of its own.
+struct CacheDir {
+  fs::path dir;
+  explicit CacheDir(const char* name) {
+    const char* base = std::getenv("RADCL_CACHE_DIR");
+    dir = fs::path(base ? base : "/tmp") / "cache-tests" / name;
+    fs::remove_all(dir);
+    setenv("RADCL_CACHE_DIR", dir.c_str(), 1);
+  }
+  std::size_t binaries() const {
+    std::size_t n = 0;
+    if (fs::exists(dir / "programs"))
+      for (auto& e : fs::directory_iterator(dir / "programs"))
+        n += e.path().extension() == ".bin";
+    return n;
+  }
+};
+} // namespace
+
+TEST(ProgramCache, SecondBuildLoadsBinaryAndStillRuns) {
+  CacheDir cache("reuse");
+  Context& ctx = test_context();
+  ProgramSource src{{"probe/rng.cl"}, "", "-cl-std=CL1.2"};
+  Program first(ctx, src);
+  EXPECT_FALSE(first.loaded_from_cache());
+  EXPECT_EQ(cache.binaries(), 1u);
+  Program second(ctx, src);
+  EXPECT_TRUE(second.loaded_from_cache());
+  EXPECT_EQ(first.cache_key(), second.cache_key());
+
+  // The cached program computes the same as the one built from source.
+  Buffer b1(ctx, 64 * 4), b2(ctx, 64 * 4), u(ctx, 64 * 4);
+  Kernel k1 = first.kernel("rc_rng_fill"), k2 = second.kernel("rc_rng_fill");
+  std::uint32_t n = 64, dims = 1, seed = 5;
+  k1.arg(0, b1).arg(1, u).arg(2, n).arg(3, dims).arg(4, seed);
+  k2.arg(0, b2).arg(1, u).arg(2, n).arg(3, dims).arg(4, seed);
+  ctx.run(k1, n);
+  ctx.run(k2, n);
+  EXPECT_EQ(b1.to_vector<std::uint32_t>(n), b2.to_vector<std::uint32_t>(n));
+}
+
+TEST(ProgramCache, KeyDependsOnOptionsAndSource) {
+  CacheDir cache("keys");
+  Context& ctx = test_context();
+  Program a(ctx, ProgramSource{{"probe/rng.cl"}, "", "-cl-std=CL1.2"});
+  Program b(ctx, ProgramSource{{"probe/rng.cl"}, "", "-cl-std=CL1.2 -DRADCL_X=1"});
+  Program c(ctx, ProgramSource{{"probe/rng.cl"}, "/* other generated code */", "-cl-std=CL1.2"});
+  EXPECT_NE(a.cache_key(), b.cache_key());
+  EXPECT_EQ(a.source(), c.source()); // rng.cl does not include generated.cl
+  EXPECT_FALSE(b.loaded_from_cache());
+  EXPECT_EQ(cache.binaries(), 2u);
+}
+
+TEST(ProgramCache, CorruptBinaryIsRebuilt) {
+  CacheDir cache("corrupt");
+  Context& ctx = test_context();
+  ProgramSource src{{"probe/layout.cl"}, "", "-cl-std=CL1.2"};
+  std::string key = Program(ctx, src).cache_key();
+  std::ofstream(cache.dir / "programs" / (key + ".bin"), std::ios::binary) << "garbage";
+  Program again(ctx, src);
+  EXPECT_FALSE(again.loaded_from_cache());
+  Program third(ctx, src);
+  EXPECT_TRUE(third.loaded_from_cache());
+}
+
+TEST(ProgramCache, DisabledByEnvironment) {
+  CacheDir cache("off");
+  setenv("RADCL_PROGRAM_CACHE", "0", 1);
+  Context& ctx = test_context();
+  Program p(ctx, ProgramSource{{"probe/layout.cl"}, "", "-cl-std=CL1.2"});
+  unsetenv("RADCL_PROGRAM_CACHE");
+  EXPECT_EQ(cache.binaries(), 0u);
+}
+
+TEST(ProgramBuild, FailureIsFatalWithTheCompilerLog) {
+  Context& ctx = test_context();
+  try {
+    Program p(ctx, ProgramSource{{"probe/features.cl"}, "this is not OpenCL;\n", "-cl-std=CL1.2"});
+    FAIL() << "build should fail";
+  } catch (const radcl::FatalError& e) {
+    std::string msg = e.what();
+    EXPECT_NE(msg.find("OpenCL program build failed"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("generated.cl:1"), std::string::npos) << "log names file and line: " << msg;
+  }
+}
+
+TEST(ProgramSource, IncludesExpandOnceWithLineMarkers) {
+  std::string s = ProgramSource{{"probe/features.cl"}, "int generated_marker;", ""}.assemble();
+  EXPECT_NE(s.find("#line 1 \"radcl/device_types.h\""), std::string::npos);
+  EXPECT_NE(s.find("int generated_marker;"), std::string::npos);
+  EXPECT_EQ(s.find("#include \""), std::string::npos);
+  EXPECT_THROW(ProgramSource({{"no/such.cl"}, "", ""}).assemble(), radcl::FatalError);
+}
