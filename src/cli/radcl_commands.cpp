@@ -4,7 +4,8 @@ namespace radcl::cli {
 
 std::span<const Command> commands() {
   static const Command kCommands[] = {
-      {"devices", "list OpenCL platforms and devices (RADCL_DEVICE selects one)", cmd_devices},
+      {"devices", "list OpenCL devices (RADCL_DEVICE selects one); --check tests each",
+       cmd_devices},
   };
   return kCommands;
 }

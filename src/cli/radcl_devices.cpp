@@ -3,8 +3,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
+#include "radcl/device/context.h"
 #include "radcl/device/device_info.h"
+#include "radcl/device/self_check.h"
 #include "radcl/util/error.h"
 #include "radcl_commands.h"
 
@@ -13,17 +16,38 @@ namespace {
 std::string mib(std::uint64_t bytes) {
   return std::to_string(bytes >> 20) + " MiB";
 }
+
+// Builds the probe programs on `d` and compares struct layouts and random numbers with the host.
+bool self_check(const device::DeviceInfo& d) {
+  device::Context ctx(d);
+  bool ok = true;
+  auto report = [&](const char* what, const std::vector<std::string>& bad) {
+    std::printf("     check          %s: %s\n", what, bad.empty() ? "ok" : "FAILED");
+    for (const std::string& b : bad)
+      std::printf("                    %s\n", b.c_str());
+    ok = ok && bad.empty();
+  };
+  report("struct layout", device::check_layout(ctx));
+  report("random numbers", device::check_rng(ctx, 4099, 8, 12345));
+  return ok;
+}
 } // namespace
 
 int cmd_devices(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
-    throw FatalError(std::string("devices: unknown option \"") + argv[i] + "\"");
+  bool check = false;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--check")
+      check = true;
+    else
+      throw FatalError(std::string("devices: unknown option \"") + argv[i] + "\"");
+  }
   auto devices = device::enumerate_devices();
   if (devices.empty()) {
     std::printf("no OpenCL devices\n");
     return 1;
   }
   const char* spec = std::getenv("RADCL_DEVICE");
+  int failed = 0;
   int chosen = device::select_device(devices, spec ? spec : "").index;
   for (const device::DeviceInfo& d : devices) {
     std::printf("%c %d: %s [%s]\n", d.index == chosen ? '*' : ' ', d.index, d.name.c_str(),
@@ -41,10 +65,11 @@ int cmd_devices(int argc, char** argv) {
     std::printf("     host memory    %s\n",
                 d.host_unified_memory ? "shared (zero-copy buffers)" : "separate (transfers)");
     if (!d.available) std::printf("     (not available)\n");
+    if (check && d.available && !self_check(d)) ++failed;
   }
   std::printf("* = selected (%s)\n", spec ? ("RADCL_DEVICE=" + std::string(spec)).c_str()
                                           : "default: first GPU, else first CPU");
-  return 0;
+  return failed ? 1 : 0;
 }
 
 } // namespace radcl::cli
