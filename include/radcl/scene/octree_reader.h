@@ -11,6 +11,15 @@ namespace radcl::scene {
 // current directory) for an unfrozen octree, or decoded from the binary object section for a
 // frozen one. The octree's own spatial tree is validated (object count, set members are
 // surfaces) but not kept: radcl builds its own acceleration structure.
+// A path starting with '!' is a command whose output is the octree.
 SceneDescription read_octree(const std::string& path);
+
+class ByteReader;
+
+// Decodes Radiance's binary scene section (frozen octrees, mesh materials): the type-name
+// table, then object records appended to `scene` with modifier numbers offset by the objects
+// already there, up to the 0xFF end marker. Returns false when the data ended before the
+// marker at a record boundary (Radiance treats that as the end; callers decide).
+bool read_binary_scene(ByteReader& in, int objsize, SceneDescription& scene);
 
 } // namespace radcl::scene
