@@ -17,4 +17,10 @@ void read_rad_file(SceneDescription& scene, const std::string& path);
 // Same for an already opened stream; `name` is used in messages.
 void read_rad_stream(SceneDescription& scene, std::istream& in, const std::string& name);
 
+// Checks a primitive's argument counts (and its transform, where its type has one whose
+// position is known without reading data files) against the limits of Radiance's code for
+// that type. Returns "" if fine, else the problem ("bad # arguments", "bad transform"), which
+// the reader reports as `(file line N): bad # arguments for plastic "x"`.
+std::string check_arguments(const Object& obj);
+
 } // namespace radcl::scene

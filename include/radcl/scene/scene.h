@@ -31,17 +31,23 @@ struct Object {
 // equal Radiance's object numbers for the same input.
 struct SceneDescription {
   std::vector<Object> objects;
-  std::vector<std::string> files;                              // input names, for messages
+  std::vector<std::string> files;                               // input names, for messages
   std::unordered_map<std::string, std::int32_t> modifier_index; // most recent definition
 
   // Set when loaded from an octree.
-  std::vector<std::string> header;  // header lines (without FORMAT=), as rtrace echoes them
+  std::vector<std::string> header; // header lines (without FORMAT=), as rtrace echoes them
   std::array<double, 3> cube_origin{0, 0, 0};
   double cube_size = 0;
   bool frozen = false;
 
-  // Resolves a modifier name as Radiance does at this point of reading (kVoid for "void").
+  // Resolves a modifier name as Radiance does at this point of reading (kVoid for "void"; also
+  // kVoid for a name never defined, as Radiance's modifier()).
   std::int32_t find_modifier(const std::string& name) const;
+
+  // Radiance's lastmod(): the most recent modifier called `name` defined before object
+  // `before` (any definition if `before` is kVoid). Used for references held in string
+  // arguments (alias, illum/mirror alternates, mixture inputs), which resolve this way.
+  std::int32_t last_modifier(std::int32_t before, const std::string& name) const;
 };
 
 } // namespace radcl::scene

@@ -18,6 +18,11 @@ struct Transform {
   bool is_identity() const;
 };
 
+// Radiance's xf(): parses the longest valid transform starting at args[first] into `out` and
+// returns the index of the first word not used (args.size() when all were used).
+std::size_t transform_prefix(const std::vector<std::string>& args, std::size_t first,
+                             Transform& out);
+
 // Parses args[first..] completely; throws FatalError("bad transform") on anything left over
 // or malformed. An empty range gives the identity.
 Transform parse_transform(const std::vector<std::string>& args, std::size_t first = 0);
