@@ -122,10 +122,9 @@ DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::stri
     }
     std::string want = lower(spec);
     for (const DeviceInfo& d : devices)
-      if (lower(d.name).find(want) != std::string::npos ||
-          lower(d.vendor).find(want) != std::string::npos ||
-          lower(d.platform_name).find(want) != std::string::npos)
-        return d;
+      for (const std::string* field :
+           {&d.name, &d.vendor, &d.platform_name, &d.platform_version, &d.device_version})
+        if (lower(*field).find(want) != std::string::npos) return d;
     throw FatalError("RADCL_DEVICE=" + spec + ": no device matches (see radcl devices)");
   }
   for (DeviceKind k : {DeviceKind::GPU, DeviceKind::CPU})

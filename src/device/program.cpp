@@ -121,7 +121,7 @@ Program::Program(Context& ctx, const ProgramSource& src)
                   clCreateProgramWithSource(ctx.handle(), 1, &text, &len, &radcl_status_));
   cl_int st = clBuildProgram(program_, 1, &id, options_.c_str(), nullptr, nullptr);
   if (st != CL_SUCCESS) {
-    std::string log = build_log(program_, id);
+    std::string log = locate_log_lines(build_log(program_, id), source_);
     clReleaseProgram(program_);
     program_ = nullptr;
     throw FatalError("OpenCL program build failed on " + dev.name + " (" + cl_status_name(st) +

@@ -1,6 +1,8 @@
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "radcl/device/embedded_sources.h"
 #include "radcl/device/program.h"
@@ -51,6 +53,39 @@ void expand(const std::string& name, std::string_view text, const std::string& g
 }
 
 } // namespace
+
+std::string locate_log_lines(const std::string& log, const std::string& assembled) {
+  // Original position of every assembled line, from the #line markers expand() wrote.
+  std::vector<std::string> where{""};
+  std::string file = "?";
+  std::size_t line = 0, pos = 0;
+  while (pos <= assembled.size()) {
+    std::size_t end = assembled.find('\n', pos);
+    if (end == std::string::npos) end = assembled.size();
+    std::string_view l(assembled.data() + pos, end - pos);
+    if (l.rfind("#line ", 0) == 0) {
+      std::size_t q = l.find('"');
+      line = std::stoul(std::string(l.substr(6))) - 1;
+      if (q != std::string_view::npos) file = std::string(l.substr(q + 1, l.rfind('"') - q - 1));
+      where.push_back(file + ":" + std::to_string(line));
+    } else {
+      where.push_back(file + ":" + std::to_string(++line));
+    }
+    pos = end + 1;
+  }
+  static const std::regex pos_re(R"(<(kernel|source)>:(\d+):)");
+  std::string out;
+  auto begin = std::sregex_iterator(log.begin(), log.end(), pos_re);
+  std::size_t last = 0;
+  for (auto it = begin; it != std::sregex_iterator(); ++it) {
+    std::size_t n = std::stoul((*it)[2]);
+    out.append(log, last, it->position() - last);
+    out += n < where.size() ? where[n] + ":" : it->str();
+    last = it->position() + it->length();
+  }
+  out.append(log, last, std::string::npos);
+  return out;
+}
 
 std::string ProgramSource::assemble() const {
   std::string out;

@@ -13,11 +13,11 @@ namespace radcl::device {
 std::vector<std::string> check_layout(Context& ctx) {
   std::vector<std::uint64_t> host;
   std::vector<std::string> what;
-#define RC_SIZE(T)                                                                             \
-  host.push_back(sizeof(T));                                                                   \
+#define RC_SIZE(T)                                                                                 \
+  host.push_back(sizeof(T));                                                                       \
   what.push_back("sizeof(" #T ")");
-#define RC_FIELD(T, f)                                                                         \
-  host.push_back(offsetof(T, f));                                                              \
+#define RC_FIELD(T, f)                                                                             \
+  host.push_back(offsetof(T, f));                                                                  \
   what.push_back("offsetof(" #T ", " #f ")");
   RADCL_LAYOUT_STRUCTS(RC_SIZE)
   RADCL_LAYOUT_FIELDS(RC_FIELD)

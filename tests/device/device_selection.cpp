@@ -14,6 +14,7 @@ std::vector<DeviceInfo> fake() {
   v[1].index = 1, v[1].name = "NVIDIA H100 80GB HBM3", v[1].platform_name = "NVIDIA CUDA",
   v[1].kind = DeviceKind::GPU;
   v[2].index = 2, v[2].name = "Other", v[2].vendor = "ACME", v[2].kind = DeviceKind::Other;
+  v[0].device_version = "OpenCL 3.0 PoCL HSTR: cpu-x86_64";
   return v;
 }
 } // namespace
@@ -32,6 +33,7 @@ TEST(DeviceSelection, ByIndexAndCaseInsensitiveName) {
   EXPECT_EQ(select_device(v, "h100").index, 1);
   EXPECT_EQ(select_device(v, "portable").index, 0);
   EXPECT_EQ(select_device(v, "acme").index, 2);
+  EXPECT_EQ(select_device(v, "pocl").index, 0);
 }
 
 TEST(DeviceSelection, ErrorsAreFatal) {

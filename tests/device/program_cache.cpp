@@ -100,6 +100,18 @@ TEST(ProgramBuild, FailureIsFatalWithTheCompilerLog) {
   }
 }
 
+TEST(ProgramSource, LogPositionsMapToEmbeddedFiles) {
+  std::string src = ProgramSource{{"probe/features.cl"}, "int a;\nint b;\n", ""}.assemble();
+  // Find the assembled line number of "int b;" and phrase it as NVIDIA's compiler does.
+  std::size_t n = 1;
+  for (std::size_t i = 0; i < src.find("int b;"); ++i)
+    n += src[i] == '\n';
+  std::string log = "<kernel>:" + std::to_string(n) + ":1: error: x\n<kernel>:2:2: note\n";
+  std::string out = locate_log_lines(log, src);
+  EXPECT_NE(out.find("generated.cl:2:1: error: x"), std::string::npos) << out;
+  EXPECT_NE(out.find("probe/features.cl:1:2: note"), std::string::npos) << out;
+}
+
 TEST(ProgramSource, IncludesExpandOnceWithLineMarkers) {
   std::string s = ProgramSource{{"probe/features.cl"}, "int generated_marker;", ""}.assemble();
   EXPECT_NE(s.find("#line 1 \"radcl/device_types.h\""), std::string::npos);

@@ -28,9 +28,10 @@ const char* kind_name(DeviceKind k);
 // Every device of every platform, in platform order. No platform is not an error here.
 std::vector<DeviceInfo> enumerate_devices();
 
-// RADCL_DEVICE selects by index or by a case-insensitive substring of the device, vendor or
-// platform name; without it the first GPU, else the first CPU, else the first device.
-// Throws FatalError when nothing matches or there is no OpenCL device at all.
+// RADCL_DEVICE selects by index or by a case-insensitive substring of the device name, vendor,
+// platform name or version strings (so "pocl" finds PoCL whatever the CPU is called); without it
+// the first GPU, else the first CPU, else the first device. Throws FatalError when nothing matches
+// or there is no OpenCL device at all.
 DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::string& spec);
 DeviceInfo select_device(); // from the environment
 

@@ -26,6 +26,10 @@ struct ProgramSource {
   std::string assemble() const;
 };
 
+// Rewrites "<kernel>:N:" and "<source>:N:" positions in a compiler log (drivers that ignore
+// #line file names, e.g. NVIDIA's) to "file:line:" of the embedded source they came from.
+std::string locate_log_lines(const std::string& log, const std::string& assembled);
+
 class Kernel {
 public:
   Kernel() = default;
