@@ -1,0 +1,42 @@
+// Spheres, cones, cylinders and rings (with their inward twins) as exact double-precision
+// surfaces, set up from Radiance objects with Radiance's argument checks and conversions.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "radcl/scene/scene.h"
+#include "vec.h"
+
+namespace radcl::geometry {
+
+enum class Shape : std::uint8_t { Sphere, Cone, Ring };
+
+struct AnalyticSurface {
+  std::int32_t object = -1;
+  scene::ObjectType type{}; // after conversions (negative radius: sphere <-> bubble, ...)
+  Shape shape = Shape::Sphere;
+  bool inward = false;   // bubble, cup, tube: normal points to the axis/centre
+  Vec3 c{};              // sphere/ring centre; cone/cylinder end with the smaller radius
+  Vec3 axis{};           // unit: cone from small to large end; ring normal
+  double length = 0;     // cone axis length
+  double r0 = 0, r1 = 0; // radius at c and at the far end (cylinder: equal); ring inner/outer
+};
+
+// Validates and converts `o` (a sphere, bubble, cone, cup, cylinder, tube or ring). Throws
+// FatalError for bad argument counts and illegal radii; warns for negative radii. Returns
+// nullopt (after Radiance's warning) for a cone without orientation.
+std::optional<AnalyticSurface> make_analytic(const scene::Object& o, std::int32_t index);
+
+// Re-expresses the surface relative to `origin`.
+void shift(AnalyticSurface& s, const Vec3& origin);
+
+// Bounds (lo, hi) of the surface.
+std::array<Vec3, 2> analytic_bounds(const AnalyticSurface& s);
+
+// First intersection of o + t d with tmin < t < tmax (d need not be unit; t is parametric).
+// On a hit, sets t and the unit normal in Radiance's orientation.
+bool intersect_analytic(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin,
+                        double tmax, double& t, Vec3& n);
+
+} // namespace radcl::geometry

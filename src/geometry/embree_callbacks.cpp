@@ -1,0 +1,104 @@
+// Embree callbacks. Queries go through rtcIntersect1/rtcOccluded1 only, so N is always 1 and
+// the context is always a RayContext. Distances are parametric along the caller's unit world
+// direction, which Embree's instance transforms preserve, so local and world t agree.
+#include <cmath>
+#include <limits>
+
+#include "impl.h"
+
+namespace radcl::geometry {
+namespace {
+
+// Padding so float boxes enclose the double surfaces despite rounding of the box and of the
+// float ray Embree traverses with.
+void write_bounds(const std::array<Vec3, 2>& b, RTCBounds* out) {
+  double size = 0;
+  for (int k = 0; k < 3; ++k)
+    size = std::max(size, b[1][k] - b[0][k]);
+  float lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) {
+    const double pad = 1e-5 * size + 1e-6 * std::max(std::abs(b[0][k]), std::abs(b[1][k]));
+    lo[k] = std::nextafter(static_cast<float>(b[0][k] - pad), -INFINITY);
+    hi[k] = std::nextafter(static_cast<float>(b[1][k] + pad), INFINITY);
+  }
+  out->lower_x = lo[0], out->lower_y = lo[1], out->lower_z = lo[2];
+  out->upper_x = hi[0], out->upper_y = hi[1], out->upper_z = hi[2];
+}
+
+struct LocalRay {
+  Vec3 o, d;
+};
+
+LocalRay local_ray(const RayContext& rc, unsigned inst_id) {
+  const PlacementRecord& pr = rc.impl->record_for_instance(inst_id);
+  return {pr.from_world.point(rc.org), pr.from_world.vector(rc.dir)};
+}
+
+} // namespace
+
+void user_bounds(const RTCBoundsFunctionArguments* args) {
+  const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
+  write_bounds(analytic_bounds(proto->analytic[args->primID]), args->bounds_o);
+}
+
+void user_intersect(const RTCIntersectFunctionNArguments* args) {
+  if (args->valid[0] == 0) return;
+  auto* rc = reinterpret_cast<RayContext*>(args->context);
+  const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
+  const unsigned inst = args->context->instID[0];
+  const LocalRay lr = local_ray(*rc, inst);
+  RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+  RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+  float& tfar = RTCRayN_tfar(ray, args->N, 0);
+  double t;
+  Vec3 n;
+  if (!intersect_analytic(proto->analytic[args->primID], lr.o, lr.d, rc->tmin,
+                          std::min(rc->tmax, static_cast<double>(tfar)), t, n))
+    return;
+  tfar = static_cast<float>(t);
+  RTCHitN_Ng_x(hit, args->N, 0) = static_cast<float>(n[0]);
+  RTCHitN_Ng_y(hit, args->N, 0) = static_cast<float>(n[1]);
+  RTCHitN_Ng_z(hit, args->N, 0) = static_cast<float>(n[2]);
+  RTCHitN_u(hit, args->N, 0) = 0;
+  RTCHitN_v(hit, args->N, 0) = 0;
+  RTCHitN_primID(hit, args->N, 0) = args->primID;
+  RTCHitN_geomID(hit, args->N, 0) = args->geomID;
+  RTCHitN_instID(hit, args->N, 0, 0) = inst;
+  rc->user_hit = true;
+  rc->inst = inst;
+  rc->geom = args->geomID;
+  rc->prim = args->primID;
+  rc->t = t;
+  rc->normal = n;
+}
+
+void user_occluded(const RTCOccludedFunctionNArguments* args) {
+  if (args->valid[0] == 0) return;
+  auto* rc = reinterpret_cast<RayContext*>(args->context);
+  const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
+  const LocalRay lr = local_ray(*rc, args->context->instID[0]);
+  float& tfar = RTCRayN_tfar(args->ray, args->N, 0);
+  double t;
+  Vec3 n;
+  if (intersect_analytic(proto->analytic[args->primID], lr.o, lr.d, rc->tmin,
+                         std::min(rc->tmax, static_cast<double>(tfar)), t, n))
+    tfar = -std::numeric_limits<float>::infinity();
+}
+
+// Embree's float distance only nominates a triangle; the exact distance to the polygon's
+// plane decides whether it lies in (tmin, tmax) — this is what stops rays leaving a surface
+// from hitting it again.
+void triangle_filter(const RTCFilterFunctionNArguments* args) {
+  if (args->valid[0] == 0) return;
+  const auto* rc = reinterpret_cast<const RayContext*>(args->context);
+  const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
+  const unsigned inst = RTCHitN_instID(args->hit, args->N, 0, 0);
+  const unsigned prim = RTCHitN_primID(args->hit, args->N, 0);
+  const LocalRay lr = local_ray(*rc, inst);
+  double t;
+  Vec3 n;
+  if (!triangle_distance(*proto, prim, lr.o, lr.d, t, n) || !(t > rc->tmin && t < rc->tmax))
+    args->valid[0] = 0;
+}
+
+} // namespace radcl::geometry

@@ -1,0 +1,116 @@
+// Ray queries: the caller's double ray is re-centred and rounded for Embree's traversal, with
+// Embree's interval widened by a float slack; the exact interval is enforced by the callbacks
+// and the answer is rebuilt in double from the winning primitive.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <limits>
+
+#include "impl.h"
+#include "radcl/util/error.h"
+
+namespace radcl::geometry {
+namespace {
+
+bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, double tmin, double tmax,
+           RayContext& rc, RTCRay& ray) {
+  rtcInitIntersectContext(&rc.ctx);
+  rc.impl = &g;
+  const double l = length(dir);
+  if (!(l > 0) || !std::isfinite(l)) return false;
+  rc.org = org;
+  rc.dir = scale(dir, 1 / l);
+  rc.tmin = std::max(tmin, g.eps);
+  rc.tmax = tmax;
+  if (!(rc.tmax > rc.tmin)) return false;
+  const Vec3 o = sub(org, g.centre);
+  ray.org_x = static_cast<float>(o[0]);
+  ray.org_y = static_cast<float>(o[1]);
+  ray.org_z = static_cast<float>(o[2]);
+  ray.dir_x = static_cast<float>(rc.dir[0]);
+  ray.dir_y = static_cast<float>(rc.dir[1]);
+  ray.dir_z = static_cast<float>(rc.dir[2]);
+  const double slack = g.margin + 1e-6 * rc.tmin;
+  ray.tnear = static_cast<float>(std::max(0.0, rc.tmin - slack));
+  const double far = rc.tmax + g.margin + 1e-6 * rc.tmax;
+  ray.tfar = far < 1e37 ? static_cast<float>(far) : std::numeric_limits<float>::infinity();
+  ray.time = 0;
+  ray.mask = ~0u;
+  ray.id = 0;
+  ray.flags = 0;
+  return true;
+}
+
+} // namespace
+
+std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, double tmin,
+                                            double tmax) const {
+  const Impl& g = *impl_;
+  RayContext rc;
+  RTCRayHit rh;
+  if (!setup(g, org, dir, tmin, tmax, rc, rh.ray)) return std::nullopt;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(g.top, &rc.ctx, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+  const unsigned inst = rh.hit.instID[0];
+  Hit h;
+  h.placement = inst == RTC_INVALID_GEOMETRY_ID ? 0 : g.top_geom_placement[inst];
+  const PlacementRecord& rec = g.records[h.placement];
+  const Prototype& p = g.prototypes[rec.prototype];
+  h.instance = g.placements[h.placement].instance_object;
+  Vec3 n;
+  if (rh.hit.geomID == p.user_geom) {
+    if (!rc.user_hit || rc.geom != rh.hit.geomID || rc.inst != inst)
+      throw std::logic_error("geometry: lost the exact user-geometry hit");
+    h.t = rc.t;
+    n = rc.normal;
+    h.object = p.analytic[rh.hit.primID].object;
+  } else {
+    const Vec3 o = rec.from_world.point(rc.org), d = rec.from_world.vector(rc.dir);
+    if (!triangle_distance(p, rh.hit.primID, o, d, h.t, n)) return std::nullopt;
+    h.u = rh.hit.u;
+    h.v = rh.hit.v;
+    if (p.mesh != nullptr) {
+      h.object = rec.mesh_object;
+      h.prim = p.mesh_triangle[rh.hit.primID];
+    } else {
+      const PolygonRecord& pol = p.polygons[p.triangle_polygon[rh.hit.primID]];
+      h.object = pol.object;
+      h.prim = rh.hit.primID - pol.first_triangle;
+    }
+  }
+  h.point = madd(rc.org, rc.dir, h.t);
+  h.normal = normalized(rec.to_world.vector(n));
+  h.front = dot(h.normal, rc.dir) < 0;
+  return h;
+}
+
+bool SceneGeometry::occluded(const Vec3d& org, const Vec3d& dir, double tmin, double tmax) const {
+  const Impl& g = *impl_;
+  RayContext rc;
+  RTCRay ray;
+  if (!setup(g, org, dir, tmin, tmax, rc, ray)) return false;
+  rtcOccluded1(g.top, &rc.ctx, &ray);
+  return ray.tfar < 0;
+}
+
+void SceneGeometry::intersect(std::span<const Ray> rays, std::span<std::optional<Hit>> hits) const {
+  if (hits.size() != rays.size()) throw std::invalid_argument("intersect: size mismatch");
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 64), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
+      hits[i] = intersect(rays[i].org, rays[i].dir, rays[i].tmin, rays[i].tmax);
+  });
+}
+
+void SceneGeometry::occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const {
+  if (blocked.size() != rays.size()) throw std::invalid_argument("occluded: size mismatch");
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 64), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
+      blocked[i] = occluded(rays[i].org, rays[i].dir, rays[i].tmin, rays[i].tmax) ? 1 : 0;
+  });
+}
+
+} // namespace radcl::geometry
