@@ -14,5 +14,6 @@ struct Command {
 std::span<const Command> commands();
 
 int cmd_devices(int argc, char** argv);
+int cmd_scene(int argc, char** argv);
 
 } // namespace radcl::cli
