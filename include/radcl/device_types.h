@@ -48,35 +48,97 @@ typedef struct rc_float4 {
 enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
 #undef RADCL_ENUM_ENTRY
 
+/* Coordinates on the device are relative to the scene's re-centring origin (its bounding-box
+ * centre, see geometry::SceneGeometry::centre()), so float keeps its precision far from the
+ * world origin. "~0u" marks "none" in index fields. */
+#define RC_NONE 0xFFFFFFFFu
+
+/* Ray kinds (rc_ray.flags low bits), as Radiance's ray types. */
+#define RC_RAY_PRIMARY 0u
+#define RC_RAY_REFLECTED 1u   /* pure specular reflection */
+#define RC_RAY_TRANSMITTED 2u /* pure specular transmission */
+#define RC_RAY_SPECULAR 3u    /* sampled rough specular */
+#define RC_RAY_AMBIENT 4u     /* indirect diffuse sample */
+#define RC_RAY_KIND_MASK 7u
+
 /* One ray of a wave. org.w = tmin, dir.w = tmax; coef.xyz is the accumulated coefficient
  * (product of material coefficients down the tree), coef.w the scalar ray weight that -lw cuts. */
 typedef struct rc_ray {
   rc_float4 org;
   rc_float4 dir;
   rc_float4 coef;
-  rc_u32 primary; /* index of the primary ray this contribution belongs to */
-  rc_u32 depth;   /* reflection depth (Radiance's r->rlvl) */
-  rc_u32 flags;   /* RC_RAY_* kind bits */
-  rc_u32 sample;  /* sample index within its parent, keys the random numbers */
+  rc_u32 primary;       /* index of the primary ray this contribution belongs to */
+  rc_u32 depth;         /* reflection depth (Radiance's r->rlvl) */
+  rc_u32 flags;         /* RC_RAY_* kind */
+  rc_u32 sample;        /* sample index within its parent, keys the random numbers */
+  rc_u32 ambient_depth; /* ambient bounces taken so far (Radiance's r->rlvl for -ab) */
+  rc_u32 pad0, pad1, pad2;
 } rc_ray;
 
 /* The host's answer for one ray of a wave (from Embree). */
 typedef struct rc_hit {
-  rc_float4 ng;  /* geometric normal (unnormalised), w = hit distance t, <0 for a miss */
-  rc_float4 uvw; /* x,y barycentric/surface parameters, z,w unused */
-  rc_u32 object; /* surface object index in the compiled scene, or ~0u for a miss */
-  rc_u32 prim;   /* primitive within the object (triangle of a polygon/mesh) */
-  rc_u32 inst;   /* instance index, or ~0u */
-  rc_u32 pad;
+  rc_float4 pos; /* hit point (re-centred), w = distance t; t < 0 for a miss */
+  rc_float4 nrm; /* unit geometric normal in Radiance's orientation (not flipped), w unused */
+  rc_float4 uv;  /* x,y: triangle barycentrics or surface parameters */
+  rc_u32 surface; /* index into the compiled surfaces, RC_NONE for a miss */
+  rc_u32 prim;    /* triangle within a polygon or mesh */
+  rc_u32 source;  /* for a miss: the distant source it hits, else RC_NONE */
+  rc_u32 front;   /* 1 if the ray arrived against the normal */
 } rc_hit;
+
+/* A surface as the kernels see it. */
+typedef struct rc_surface {
+  rc_u32 material; /* index into the compiled materials, RC_NONE = void (invisible) */
+  rc_u32 type;     /* rc_object_type of the surface */
+  rc_u32 source;   /* light-source index when the surface is a direct source, else RC_NONE */
+  rc_u32 object;   /* the surface's object number (names for output) */
+} rc_surface;
+
+/* A material or other modifier; its real arguments live in a float buffer at [args, args+nargs). */
+typedef struct rc_material {
+  rc_u32 type;  /* rc_object_type */
+  rc_u32 args;  /* offset into the argument buffer */
+  rc_u32 nargs;
+  rc_u32 alt;   /* alternate material of illum/mirror (RC_NONE = void), else RC_NONE */
+} rc_material;
+
+/* Light-source geometry kinds. */
+#define RC_SRC_SPHERE 0u   /* sphere: pos = centre, pos.w = radius */
+#define RC_SRC_FLAT 1u     /* polygon or ring: pos = centre, axis = normal */
+#define RC_SRC_CYLINDER 2u /* cylinder: pos = centre, axis = unit axis, axis.w = length */
+#define RC_SRC_DISTANT 3u  /* source: pos = unit direction, axis.w = solid angle */
+
+/* Light-source flags. */
+#define RC_SRCF_ILLUM 1u /* illum: seen as its alternate by non-shadow rays */
+#define RC_SRCF_GLOW 2u  /* glow: lights only points within emit.w of it */
+#define RC_SRCF_SPOT 4u  /* spotlight: spot.xyz direction, spot.w = cos(half angle) */
+
+/* A light source for the direct calculation (Radiance's SRCREC). */
+typedef struct rc_source {
+  rc_float4 pos;  /* centre (re-centred) or direction (distant); w = radius */
+  rc_float4 axis; /* normal (flat) or axis (cylinder); w = area (flat), length (cylinder) or
+                     solid angle (distant) */
+  rc_float4 su;   /* flat: first in-plane half-extent vector of the sampling rectangle;
+                     w = inner radius of a ring */
+  rc_float4 sv;   /* flat: second in-plane half-extent vector */
+  rc_float4 emit; /* radiance (rgb) of the material; w = glow's maximum radius */
+  rc_float4 spot; /* spotlight direction (unit) and cos(half angle); w = -2 if not a spot */
+  rc_u32 kind;    /* RC_SRC_* */
+  rc_u32 flags;   /* RC_SRCF_* */
+  rc_u32 surface; /* compiled surface index (RC_NONE for distant sources) */
+  rc_u32 verts;   /* polygon: offset of its vertices (float4) in the vertex buffer */
+  rc_u32 nverts;  /* polygon: vertex count (0 for ring, sphere, cylinder, distant) */
+  float spot_focus; /* spotlight: distance of the virtual focus behind the centre */
+  rc_u32 pad0, pad1;
+} rc_source;
 
 /* A shadow-ray request and the contribution it adds to its primary ray if unoccluded. */
 typedef struct rc_shadow {
   rc_float4 org;     /* w = tmin */
-  rc_float4 dir;     /* w = distance to the source sample (tmax) */
+  rc_float4 dir;     /* w = distance to the source sample (tmax; large for distant) */
   rc_float4 contrib; /* rgb to add, w unused */
   rc_u32 primary;
-  rc_u32 source; /* light-source index: the ray must hit this source (or nothing, for distant) */
+  rc_u32 source; /* source index: the ray counts only if it reaches this source unblocked */
   rc_u32 pad0;
   rc_u32 pad1;
 } rc_shadow;
@@ -91,14 +153,21 @@ typedef struct rc_rng_key {
 
 /* Every struct above with every field, for the host/device layout test (rc_float4's members
  * are vector components on the device, which have no address: only its size is compared). */
-#define RADCL_LAYOUT_STRUCTS(S) S(rc_float4) S(rc_ray) S(rc_hit) S(rc_shadow) S(rc_rng_key)
-#define RADCL_LAYOUT_FIELDS(F)                                                                     \
-  F(rc_ray, org)                                                                                   \
-  F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags)              \
-      F(rc_ray, sample) F(rc_hit, ng) F(rc_hit, uvw) F(rc_hit, object) F(rc_hit, prim)             \
-          F(rc_hit, inst) F(rc_hit, pad) F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) \
-              F(rc_shadow, primary) F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1)     \
-                  F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth)                \
-                      F(rc_rng_key, seed)
+#define RADCL_LAYOUT_STRUCTS(S)                                                                \
+  S(rc_float4) S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_shadow)      \
+  S(rc_rng_key)
+#define RADCL_LAYOUT_FIELDS(F)                                                                 \
+  F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
+  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, pad2)                  \
+  F(rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim)               \
+  F(rc_hit, source) F(rc_hit, front)                                                           \
+  F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(rc_surface, object)      \
+  F(rc_material, type) F(rc_material, args) F(rc_material, nargs) F(rc_material, alt)          \
+  F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(rc_source, emit)    \
+  F(rc_source, spot) F(rc_source, kind) F(rc_source, flags) F(rc_source, surface)              \
+  F(rc_source, verts) F(rc_source, nverts) F(rc_source, spot_focus) F(rc_source, pad1)         \
+  F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, primary)              \
+  F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1)                                   \
+  F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)
 
 #endif /* RADCL_DEVICE_TYPES_H */

@@ -22,5 +22,8 @@ TEST(Layout, StructsAreSixteenByteMultiples) {
   EXPECT_EQ(sizeof(rc_ray) % 16, 0u);
   EXPECT_EQ(sizeof(rc_hit) % 16, 0u);
   EXPECT_EQ(sizeof(rc_shadow) % 16, 0u);
+  EXPECT_EQ(sizeof(rc_surface) % 16, 0u);
+  EXPECT_EQ(sizeof(rc_material) % 16, 0u);
+  EXPECT_EQ(sizeof(rc_source) % 16, 0u);
   EXPECT_EQ(sizeof(rc_rng_key), 16u);
 }
