@@ -20,7 +20,11 @@ std::int32_t alias_target(const SceneDescription& scene, std::int32_t obj) {
 }
 
 std::int32_t first_material(const SceneDescription& scene, std::int32_t surface) {
-  std::int32_t m = scene.objects.at(surface).modifier;
+  return first_material_from(scene, scene.objects.at(surface).modifier);
+}
+
+std::int32_t first_material_from(const SceneDescription& scene, std::int32_t m) {
+  const std::int32_t start = m;
   for (std::size_t steps = 0; m != kVoid && steps <= scene.objects.size(); ++steps) {
     std::int32_t t = alias_target(scene, m);
     if (t == kVoid) return kVoid;
@@ -30,7 +34,7 @@ std::int32_t first_material(const SceneDescription& scene, std::int32_t surface)
     m = scene.objects[m].modifier;
   }
   if (m == kVoid) return kVoid;
-  throw FatalError("modifier loop for \"" + scene.objects[surface].name + "\"");
+  throw FatalError("modifier loop at \"" + scene.objects[start].name + "\"");
 }
 
 bool is_light_source(const SceneDescription& scene, std::int32_t surface) {

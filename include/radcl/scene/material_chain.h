@@ -15,6 +15,8 @@ std::int32_t alias_target(const SceneDescription& scene, std::int32_t obj);
 // The first material in the modifier chain of `surface` (alias targets resolved), or kVoid when
 // the chain ends in void without one. Throws FatalError for a chain that loops.
 std::int32_t first_material(const SceneDescription& scene, std::int32_t surface);
+// The same, starting from a modifier (mesh faces name theirs directly).
+std::int32_t first_material_from(const SceneDescription& scene, std::int32_t modifier);
 
 // Whether `surface` is a light source for the direct calculation: its material is light, illum
 // or spotlight, or glow with a positive radius of influence, and the surface is not a distant
