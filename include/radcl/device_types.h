@@ -52,6 +52,8 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
  * centre, see geometry::SceneGeometry::centre()), so float keeps its precision far from the
  * world origin. "~0u" marks "none" in index fields. */
 #define RC_NONE 0xFFFFFFFFu
+/* rc_hit.surface of an -I measurement point: a diffuse irradiance meter facing rc_hit.nrm. */
+#define RC_SURF_IRRADIANCE 0xFFFFFFFEu
 
 /* Ray kinds (rc_ray.flags low bits), as Radiance's ray types. */
 #define RC_RAY_PRIMARY 0u
@@ -77,12 +79,13 @@ typedef struct rc_ray {
 
 /* The host's answer for one ray of a wave (from Embree). */
 typedef struct rc_hit {
-  rc_float4 pos; /* hit point (re-centred), w = distance t; t < 0 for a miss */
+  rc_float4 pos; /* hit point (re-centred), w = distance t; t < 0 for a miss (then surface is
+                    the distant source hit, if any) */
   rc_float4 nrm; /* unit geometric normal in Radiance's orientation (not flipped), w unused */
   rc_float4 uv;  /* x,y: triangle barycentrics or surface parameters */
-  rc_u32 surface; /* index into the compiled surfaces, RC_NONE for a miss */
+  rc_u32 surface; /* compiled surface; RC_NONE for a miss that hits no distant source */
   rc_u32 prim;    /* triangle within a polygon or mesh */
-  rc_u32 source;  /* for a miss: the distant source it hits, else RC_NONE */
+  rc_u32 source;  /* light-source index of the surface hit, else RC_NONE */
   rc_u32 front;   /* 1 if the ray arrived against the normal */
 } rc_hit;
 
@@ -143,6 +146,23 @@ typedef struct rc_shadow {
   rc_u32 pad1;
 } rc_shadow;
 
+/* Rendering settings the kernels read (from the -d*, -s*, -a*, -l* options). */
+#define RC_PF_DV 1u        /* -dv: sources visible to view rays */
+#define RC_PF_BV 2u        /* -bv: back faces visible */
+#define RC_PF_IRRAD_I 4u   /* -i: primary hits become diffuse irradiance meters */
+typedef struct rc_params {
+  rc_float4 av;     /* -av ambient value (rgb); w = -lw minimum ray weight */
+  rc_float4 direct; /* -ds, -dj, -dt, -dc */
+  rc_float4 spec;   /* -ss, -st; z = scene epsilon (ray start offset), w unused */
+  rc_u32 seed;      /* random seed (-u) */
+  rc_i32 lr;        /* -lr reflection limit */
+  rc_u32 flags;     /* RC_PF_* */
+  rc_u32 ab;        /* -ab */
+  rc_u32 nsources;
+  rc_u32 irradiance_material; /* built-in material of -i/-I */
+  rc_u32 pad0, pad1;
+} rc_params;
+
 /* Counter-based random-number key: (primary ray, sample, depth, seed). */
 typedef struct rc_rng_key {
   rc_u32 primary;
@@ -155,7 +175,7 @@ typedef struct rc_rng_key {
  * are vector components on the device, which have no address: only its size is compared). */
 #define RADCL_LAYOUT_STRUCTS(S)                                                                \
   S(rc_float4) S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_shadow)      \
-  S(rc_rng_key)
+  S(rc_rng_key) S(rc_params)
 #define RADCL_LAYOUT_FIELDS(F)                                                                 \
   F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
   F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, pad2)                  \
@@ -168,6 +188,9 @@ typedef struct rc_rng_key {
   F(rc_source, verts) F(rc_source, nverts) F(rc_source, spot_focus) F(rc_source, pad1)         \
   F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, primary)              \
   F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1)                                   \
-  F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)
+  F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)    \
+  F(rc_params, av) F(rc_params, direct) F(rc_params, spec) F(rc_params, seed)                  \
+  F(rc_params, lr) F(rc_params, flags) F(rc_params, ab) F(rc_params, nsources)                 \
+  F(rc_params, irradiance_material) F(rc_params, pad1)
 
 #endif /* RADCL_DEVICE_TYPES_H */
