@@ -1,6 +1,8 @@
 // radcl scene: what radcl makes of a scene (octree or .rad files): object counts by type, the
 // surfaces placed for ray tracing, light sources and the bounding box; --list prints every
-// object in Radiance's order.
+// object in Radiance's order; --time adds the wall-clock seconds of loading the scene and of
+// building its ray-tracing geometry (for tests/bench/scene_load.sh).
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -38,20 +40,26 @@ void list_objects(const scene::SceneDescription& sd) {
 } // namespace
 
 int cmd_scene(int argc, char** argv) {
-  bool list = false;
+  bool list = false, timed = false;
   std::vector<std::string> inputs;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--list")
       list = true;
+    else if (a == "--time")
+      timed = true;
     else if (a.size() > 1 && a[0] == '-' && a[1] == '-')
       throw FatalError("scene: unknown option \"" + a + "\"");
     else
       inputs.push_back(a);
   }
-  if (inputs.empty()) throw FatalError("scene: usage: radcl scene [--list] octree|file.rad ...");
+  if (inputs.empty())
+    throw FatalError("scene: usage: radcl scene [--list] [--time] octree|file.rad ...");
 
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
   scene::LoadedScene loaded = scene::load_scene(inputs);
+  const auto t1 = Clock::now();
   const scene::SceneDescription& sd = loaded.main;
   if (list) {
     list_objects(sd);
@@ -73,7 +81,9 @@ int cmd_scene(int argc, char** argv) {
       ++patterns[name];
     }
   }
+  const auto t2 = Clock::now();
   geometry::SceneGeometry geom(loaded);
+  const auto t3 = Clock::now();
   const geometry::SurfaceCounts& c = geom.counts();
 
   std::printf("%-15s %zu\n", "objects", sd.objects.size());
@@ -93,6 +103,11 @@ int cmd_scene(int argc, char** argv) {
   auto b = geom.bounds();
   std::printf("%-15s %.6g %.6g %.6g .. %.6g %.6g %.6g\n", "bounding box", b[0][0], b[0][1], b[0][2],
               b[1][0], b[1][1], b[1][2]);
+  if (timed) {
+    const std::chrono::duration<double> load = t1 - t0, build = t3 - t2;
+    std::printf("%-15s%.3f s\n", "load time", load.count());
+    std::printf("%-15s%.3f s\n", "build time", build.count());
+  }
   return 0;
 }
 
