@@ -160,7 +160,8 @@ typedef struct rc_params {
   rc_u32 ab;        /* -ab */
   rc_u32 nsources;
   rc_u32 irradiance_material; /* built-in material of -i/-I */
-  rc_u32 pad0, pad1;
+  rc_u32 ad;                  /* -ad ambient divisions */
+  rc_u32 pad1;
 } rc_params;
 
 /* Counter-based random-number key: (primary ray, sample, depth, seed). */

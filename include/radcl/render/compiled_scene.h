@@ -1,0 +1,43 @@
+// The scene as the kernels see it: flat tables of surfaces, materials (with their real
+// arguments) and light sources, plus the feature set that specialises the device program.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "radcl/device/feature_set.h"
+#include "radcl/device_types.h"
+#include "radcl/geometry/scene_geometry.h"
+#include "radcl/render/light_sources.h"
+#include "radcl/scene/loader.h"
+
+namespace radcl::render {
+
+struct CompiledScene {
+  std::vector<rc_surface> surfaces;
+  std::vector<rc_material> materials;
+  std::vector<float> args; // material real arguments, rc_material::args indexes them
+  CompiledSources sources;
+  device::FeatureSet features;
+
+  // Host-side names for the output letters s, m and M, per compiled surface.
+  std::vector<std::string> surface_names, modifier_names, material_names;
+
+  // Built-in material of -i/-I: a diffuse surface of reflectance pi, so reflected radiance
+  // equals irradiance.
+  std::uint32_t irradiance_material = RC_NONE;
+
+  // Compiled surface of a geometry hit.
+  std::uint32_t surface_of(const geometry::Hit& hit) const;
+
+  std::vector<std::uint32_t> placement_base;              // first surface slot per placement
+  std::vector<const scene::TriangleMesh*> placement_mesh; // mesh of a mesh placement
+};
+
+// Throws FatalError naming the material for types the renderer does not handle yet.
+CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom);
+
+} // namespace radcl::render

@@ -1,0 +1,71 @@
+// The wavefront renderer: Embree traversal on the host, shading in OpenCL kernels, rays in
+// waves (design.md §3). Primary rays in, one result per primary out.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+
+#include "radcl/geometry/scene_geometry.h"
+#include "radcl/render/compiled_scene.h"
+#include "radcl/scene/loader.h"
+
+namespace radcl::device {
+class Context;
+}
+
+namespace radcl::render {
+
+using Vec3d = std::array<double, 3>;
+
+// Rendering settings with Radiance's meaning (cli-rtrace-rpict.md §2); defaults are rtrace's.
+struct RenderSettings {
+  double ds = 0.2, dj = 0, dt = 0.03, dc = 0.75;
+  bool dv = true, bv = true;
+  double ss = 1, st = 0.15;
+  Vec3d av{0, 0, 0};
+  int ab = 0;
+  int ad = 1024; // -aa 0 hemisphere divisions
+  int lr = -10;
+  double lw = 2e-3;
+  bool irradiance_i = false; // -i: primary hits become irradiance meters
+  bool irradiance_I = false; // -I: the inputs are measurement points and normals
+  std::uint32_t seed = 0;
+  std::size_t wave_size = 1u << 18; // primaries per wave
+};
+
+struct PrimaryRay {
+  Vec3d org{};
+  Vec3d dir{};     // need not be unit
+  double tmax = 0; // 0: unlimited
+};
+
+struct PrimaryResult {
+  Vec3d value{};                   // radiance (or irradiance with -i/-I), W/sr/m2 or W/m2
+  bool hit = false;                // a surface (not just a distant source) was hit
+  double t = 1e10;                 // distance to the first intersection
+  Vec3d point{};                   // first intersection (the origin if nothing was hit)
+  Vec3d normal{};                  // unperturbed normal at it, 0 if nothing hit
+  std::uint32_t surface = RC_NONE; // compiled surface of the first hit (names), or RC_NONE
+};
+
+class Renderer {
+public:
+  Renderer(const scene::LoadedScene& scene, const RenderSettings& settings, device::Context& ctx);
+  ~Renderer();
+
+  // Traces the primaries and their ray trees; results[i] belongs to rays[i].
+  void render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results);
+
+  const CompiledScene& compiled() const;
+  const geometry::SceneGeometry& geometry() const;
+
+  struct Impl;
+
+private:
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace radcl::render

@@ -1,0 +1,220 @@
+// rtrace: traces rays read from standard input through a scene and writes what -o asks for,
+// with Radiance's options, formats, header and flushing rules (cli-rtrace-rpict.md §3).
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <tbb/global_control.h>
+#include <unistd.h>
+#include <vector>
+
+#include "fd_input.h"
+#include "radcl/device/context.h"
+#include "radcl/options/ray_io.h"
+#include "radcl/options/rtrace_options.h"
+#include "radcl/render/renderer.h"
+#include "radcl/scene/loader.h"
+#include "radcl/scene/raypath.h"
+#include "radcl/util/error.h"
+
+namespace {
+
+using namespace radcl;
+
+bool g_warnings = true;
+void quiet_warning(const std::string&) {}
+
+render::RenderSettings settings_from(const options::RtraceOptions& o) {
+  const options::RenderOptions& r = o.render;
+  render::RenderSettings s;
+  s.ds = r.direct_sampling;
+  s.dj = r.direct_jitter;
+  s.dt = r.direct_threshold;
+  s.dc = r.direct_certainty;
+  s.dv = r.direct_visible;
+  s.bv = r.back_visible;
+  s.ss = r.specular_sampling;
+  s.st = r.specular_threshold;
+  s.av = r.ambient_value;
+  s.ab = r.ambient_bounces;
+  s.ad = r.ambient_divisions;
+  s.lr = r.max_depth;
+  s.lw = r.min_weight;
+  s.irradiance_i = r.irradiance;
+  s.irradiance_I = o.immediate_irradiance;
+  // -u+: a new seed every run; -u-: the same numbers every run.
+  s.seed =
+      r.uncorrelated ? static_cast<std::uint32_t>(std::time(nullptr) ^ (::getpid() << 16)) : 0u;
+  return s;
+}
+
+struct PendingRay {
+  options::Vec3 org, dir; // dir normalised; zero for a flush request
+  double length = 0;      // input direction length (-ld)
+};
+
+class Tracer {
+public:
+  Tracer(const options::RtraceCommand& cmd, const scene::LoadedScene& ls, device::Context& ctx)
+      : opt_(cmd.opt), spec_(options::parse_output_spec(opt_.output_spec)),
+        renderer_(ls, settings_from(opt_), ctx), flow_(opt_.xres, opt_.yres) {}
+
+  // Reads, traces and writes until the input ends or the -x/-y count is reached.
+  void run(std::istream& in, cli::FdInputBuf& buf) {
+    options::RayReader reader(in, opt_.in_format);
+    std::vector<PendingRay> batch;
+    bool done = false;
+    while (!done) {
+      PendingRay p;
+      bool got = reader.read(p.org, p.dir);
+      if (got) {
+        p.length = options::normalize_direction(p.dir);
+        batch.push_back(p);
+      }
+      // Answer what we have when input pauses, a wave is full, or input ends: results reach a
+      // co-process before it sends more.
+      std::size_t record = opt_.in_format == 'f' ? 24 : opt_.in_format == 'd' ? 48 : 0;
+      if (!got || batch.size() >= kWave || !buf.ready(record)) done = process(batch) || !got;
+      if (!got) break;
+    }
+    if (!done) process(batch);
+    std::fflush(stdout);
+    if (flow_.incomplete()) warning("unexpected EOF on input");
+  }
+
+private:
+  static constexpr std::size_t kWave = 1 << 16;
+  const options::RtraceOptions& opt_;
+  options::OutputSpec spec_;
+  render::Renderer renderer_;
+  options::RayFlow flow_;
+  std::string out_;
+
+  // Traces and writes a batch; true when the -x/-y count has been reached.
+  bool process(std::vector<PendingRay>& batch) {
+    std::vector<render::PrimaryRay> rays;
+    for (const PendingRay& p : batch)
+      if (p.length > 0) rays.push_back({p.org, p.dir, opt_.limit_distance ? p.length : 0.0});
+    std::vector<render::PrimaryResult> res(rays.size());
+    if (!rays.empty()) renderer_.render(rays, res);
+    std::size_t k = 0;
+    bool stop = false;
+    for (const PendingRay& p : batch) {
+      bool flush;
+      if (p.length > 0) {
+        write(p, res[k++]);
+        flush = flow_.ray_done();
+      } else {
+        out_.clear();
+        options::append_record(out_, spec_.per_ray, options::RayOutput::empty(p.org, p.dir),
+                               opt_.out_format);
+        std::fwrite(out_.data(), 1, out_.size(), stdout);
+        flush = flow_.flush_request();
+      }
+      if (flush) std::fflush(stdout);
+      if (flow_.record_done()) {
+        stop = true;
+        break;
+      }
+    }
+    batch.clear();
+    std::fflush(stdout);
+    return stop;
+  }
+
+  void write(const PendingRay& p, const render::PrimaryResult& r) {
+    const render::CompiledScene& cs = renderer_.compiled();
+    options::RayOutput o;
+    o.origin = p.org;
+    o.direction = p.dir;
+    if (opt_.immediate_irradiance) {
+      // What Radiance traces for -I: from just in front of the point, back at it.
+      for (int i = 0; i < 3; ++i) {
+        o.origin[i] = p.org[i] + 1.1e-4 * p.dir[i];
+        o.direction[i] = -p.dir[i];
+      }
+    }
+    o.value = r.value;
+    o.point = o.origin;
+    if (r.hit) {
+      o.first_length = o.effective_length = o.unmirrored_length = r.t;
+      o.point = r.point;
+      o.unperturbed_normal = r.normal;
+      double dn = r.normal[0] * p.dir[0] + r.normal[1] * p.dir[1] + r.normal[2] * p.dir[2];
+      for (int i = 0; i < 3; ++i)
+        o.normal[i] = dn > 0 ? -r.normal[i] : r.normal[i];
+      if (r.surface < cs.surfaces.size()) {
+        o.surface = cs.surface_names[r.surface];
+        o.modifier = cs.modifier_names[r.surface];
+        o.material = cs.material_names[r.surface];
+      }
+    } else if (r.surface < cs.surfaces.size()) { // a distant source
+      o.surface = cs.surface_names[r.surface];
+      o.modifier = cs.modifier_names[r.surface];
+      o.material = cs.material_names[r.surface];
+    }
+    o.derive_unmirrored();
+    out_.clear();
+    options::append_record(out_, spec_.per_ray, o, opt_.out_format);
+    std::fwrite(out_.data(), 1, out_.size(), stdout);
+  }
+};
+
+int rtrace_main(int argc, char** argv) {
+  std::vector<std::string> args(argv, argv + argc);
+  options::RtraceCommand cmd = options::parse_rtrace_command_line(args, scene::find_on_raypath);
+  if (cmd.action == options::ParsedCommand::Action::PrintDefaults) {
+    std::fputs(options::format_rtrace_defaults(cmd.opt).c_str(), stdout);
+    return 0;
+  }
+  if (cmd.action == options::ParsedCommand::Action::PrintVersion) {
+    std::printf("radcl %s (rtrace)\n", RADCL_VERSION);
+    return 0;
+  }
+  if (!cmd.opt.error_file.empty() && !std::freopen(cmd.opt.error_file.c_str(), "a", stderr))
+    throw FatalError("cannot open error file \"" + cmd.opt.error_file + "\"");
+  g_warnings = cmd.opt.warnings;
+  if (!g_warnings) set_warning_sink(quiet_warning);
+  if (cmd.operand >= cmd.args.size()) throw FatalError("missing octree argument");
+  std::vector<std::string> inputs(cmd.args.begin() + static_cast<long>(cmd.operand),
+                                  cmd.args.end());
+
+  options::OutputSpec spec = options::parse_output_spec(cmd.opt.output_spec);
+  options::check_output_format(cmd.opt.output_spec, cmd.opt.out_format);
+  options::check_output_spec(cmd.opt.output_spec, spec, cmd.opt.render,
+                             cmd.opt.immediate_irradiance);
+
+  if (cmd.opt.render.ambient_accuracy > 0 && cmd.opt.render.ambient_bounces > 0)
+    warning("irradiance cache not available yet: ambient computed without it (as -aa 0)");
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(std::max(1, cmd.opt.nproc)));
+  scene::LoadedScene ls = scene::load_scene(inputs);
+  device::Context& ctx = device::default_context();
+  Tracer tracer(cmd, ls, ctx);
+
+  if (cmd.opt.header) {
+    options::RtraceHeader h;
+    h.octree_lines = ls.main.header;
+    h.command.assign(cmd.args.begin(), cmd.args.begin() + static_cast<long>(cmd.operand));
+    h.software = std::string("radcl ") + RADCL_VERSION;
+    h.time = std::time(nullptr);
+    h.ncomp = spec.ncomp;
+    h.out_format = cmd.opt.out_format;
+    std::fputs(options::format_rtrace_header(h).c_str(), stdout);
+    if (cmd.opt.xres > 0 && cmd.opt.yres > 0)
+      std::fputs(options::format_resolution(cmd.opt.xres, cmd.opt.yres).c_str(), stdout);
+  }
+  std::fflush(stdout);
+  cli::FdInputBuf buf(0);
+  std::istream in(&buf);
+  tracer.run(in, buf);
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  return radcl::run_main("rtrace", rtrace_main, argc, argv);
+}

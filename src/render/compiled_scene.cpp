@@ -1,0 +1,176 @@
+#include "radcl/render/compiled_scene.h"
+
+#include <numbers>
+
+#include "radcl/scene/material_chain.h"
+#include "radcl/util/error.h"
+
+namespace radcl::render {
+namespace {
+
+// Materials the kernels implement so far; anything else is refused by name.
+bool supported_material(rc_object_type t) {
+  switch (t) {
+  case RC_OBJ_PLASTIC:
+  case RC_OBJ_METAL:
+  case RC_OBJ_LIGHT:
+  case RC_OBJ_GLOW:
+  case RC_OBJ_ILLUM:
+  case RC_OBJ_SPOTLIGHT:
+  case RC_OBJ_MIRROR:
+    return true;
+  default:
+    return false;
+  }
+}
+
+class Compiler {
+public:
+  Compiler(const scene::LoadedScene& ls, const geometry::SceneGeometry& geom)
+      : ls_(ls), geom_(geom) {}
+
+  CompiledScene run() {
+    const auto& placements = geom_.placements();
+    for (const geometry::Placement& pl : placements) {
+      out_.placement_base.push_back(static_cast<std::uint32_t>(out_.surfaces.size()));
+      out_.placement_mesh.push_back(pl.mesh);
+      if (pl.mesh)
+        add_mesh_surfaces(pl);
+      else
+        for (std::size_t i = 0; i < pl.scene->objects.size(); ++i)
+          add_surface(pl, static_cast<std::int32_t>(i));
+    }
+    // -i/-I: plastic (pi, pi, pi) without specular reflects radiance equal to irradiance.
+    out_.irradiance_material = static_cast<std::uint32_t>(out_.materials.size());
+    const float pi = std::numbers::pi_v<float>;
+    push_material(RC_OBJ_PLASTIC, {pi, pi, pi, 0.0f, 0.0f}, RC_NONE);
+    out_.features.add(RC_OBJ_PLASTIC);
+
+    out_.sources = compile_sources(ls_.main, geom_, [&](std::int32_t obj) {
+      return out_.placement_base[0] + static_cast<std::uint32_t>(obj);
+    });
+    for (std::size_t s = 0; s < out_.sources.sources.size(); ++s) {
+      std::uint32_t surf = out_.sources.sources[s].surface;
+      if (surf < out_.surfaces.size()) out_.surfaces[surf].source = static_cast<std::uint32_t>(s);
+    }
+    return std::move(out_);
+  }
+
+private:
+  const scene::LoadedScene& ls_;
+  const geometry::SceneGeometry& geom_;
+  CompiledScene out_;
+  std::map<std::pair<const scene::SceneDescription*, std::int32_t>, std::uint32_t> ids_;
+
+  std::uint32_t push_material(rc_object_type type, const std::vector<float>& args,
+                              std::uint32_t alt) {
+    rc_material m{};
+    m.type = type;
+    m.args = static_cast<std::uint32_t>(out_.args.size());
+    m.nargs = static_cast<std::uint32_t>(args.size());
+    m.alt = alt;
+    out_.args.insert(out_.args.end(), args.begin(), args.end());
+    out_.materials.push_back(m);
+    return static_cast<std::uint32_t>(out_.materials.size() - 1);
+  }
+
+  // The compiled material for object `obj` of `sd` (a material, aliases resolved by caller).
+  std::uint32_t material(const scene::SceneDescription& sd, std::int32_t obj) {
+    if (obj == scene::kVoid) return RC_NONE;
+    auto key = std::make_pair(&sd, obj);
+    if (auto it = ids_.find(key); it != ids_.end()) return it->second;
+    const scene::Object& o = sd.objects[obj];
+    if (!supported_material(o.type))
+      throw FatalError("material type \"" + std::string(scene::type_name(o.type)) + "\" of \"" +
+                       o.name + "\" is not supported yet");
+    // illum and mirror name an alternate material for rays other than their own purpose.
+    std::uint32_t alt = RC_NONE;
+    if ((o.type == RC_OBJ_ILLUM || o.type == RC_OBJ_MIRROR) && !o.sargs.empty() &&
+        o.sargs[0] != "void") {
+      std::int32_t a = sd.last_modifier(obj, o.sargs[0]);
+      if (a == scene::kVoid)
+        throw FatalError("undefined alternate material \"" + o.sargs[0] + "\" for " +
+                         std::string(scene::type_name(o.type)) + " \"" + o.name + "\"");
+      alt = material(sd, scene::alias_target(sd, a));
+    }
+    out_.features.add(o.type);
+    std::uint32_t id =
+        push_material(o.type, std::vector<float>(o.fargs.begin(), o.fargs.end()), alt);
+    ids_[key] = id;
+    return id;
+  }
+
+  void push_surface(rc_surface s, std::string name, std::string mod, std::string mat) {
+    out_.surfaces.push_back(s);
+    out_.surface_names.push_back(std::move(name));
+    out_.modifier_names.push_back(std::move(mod));
+    out_.material_names.push_back(std::move(mat));
+  }
+
+  void add_surface(const geometry::Placement& pl, std::int32_t obj) {
+    const scene::SceneDescription& sd = *pl.scene;
+    const scene::Object& o = sd.objects[obj];
+    rc_surface s{RC_NONE, static_cast<std::uint32_t>(o.type), RC_NONE,
+                 static_cast<std::uint32_t>(obj)};
+    if (!scene::is_surface(o.type)) {
+      push_surface(s, o.name, "", "");
+      return;
+    }
+    // An instance with a modifier shades everything inside it with that modifier and is
+    // reported as the surface hit.
+    const scene::SceneDescription* msd = &sd;
+    std::int32_t surf = obj;
+    if (pl.shade_object >= 0) {
+      msd = pl.shade_scene;
+      surf = pl.shade_object;
+    }
+    std::int32_t m = scene::first_material(*msd, surf);
+    s.material = material(*msd, m);
+    out_.features.add(o.type);
+    std::int32_t mod = msd->objects[surf].modifier;
+    push_surface(s, msd->objects[surf].name, mod == scene::kVoid ? "void" : msd->objects[mod].name,
+                 m == scene::kVoid ? "void" : msd->objects[m].name);
+  }
+
+  // One slot per modifier a mesh's faces may name (slot 0: faces without one).
+  void add_mesh_surfaces(const geometry::Placement& pl) {
+    const scene::TriangleMesh& mesh = *pl.mesh;
+    const scene::Object& prim = ls_.main.objects[pl.instance_object];
+    out_.features.add(RC_OBJ_MESH);
+    for (std::int32_t i = -1; i < static_cast<std::int32_t>(mesh.materials.size()); ++i) {
+      rc_surface s{RC_NONE, RC_OBJ_MESH, RC_NONE, static_cast<std::uint32_t>(pl.instance_object)};
+      std::string mod = "void", mat = "void";
+      if (pl.shade_object >= 0) { // the mesh primitive's own modifier overrides its faces'
+        std::int32_t m = scene::first_material(*pl.shade_scene, pl.shade_object);
+        s.material = material(*pl.shade_scene, m);
+        std::int32_t mo = pl.shade_scene->objects[pl.shade_object].modifier;
+        if (mo != scene::kVoid) mod = pl.shade_scene->objects[mo].name;
+        if (m != scene::kVoid) mat = pl.shade_scene->objects[m].name;
+      } else if (i >= 0) {
+        std::int32_t m = scene::first_material_from(mesh.objects, i);
+        s.material = material(mesh.objects, m);
+        mod = mesh.materials[i];
+        if (m != scene::kVoid) mat = mesh.objects.objects[m].name;
+      }
+      push_surface(s, prim.name, mod, mat);
+    }
+  }
+};
+
+} // namespace
+
+std::uint32_t CompiledScene::surface_of(const geometry::Hit& hit) const {
+  std::uint32_t base = placement_base[hit.placement];
+  if (const scene::TriangleMesh* mesh = placement_mesh[hit.placement]) {
+    std::int32_t m =
+        hit.prim < mesh->triangle_material.size() ? mesh->triangle_material[hit.prim] : -1;
+    return base + static_cast<std::uint32_t>(m + 1);
+  }
+  return base + static_cast<std::uint32_t>(hit.object);
+}
+
+CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom) {
+  return Compiler(scene, geom).run();
+}
+
+} // namespace radcl::render

@@ -1,0 +1,290 @@
+#include "radcl/render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "radcl/device/buffer.h"
+#include "radcl/device/context.h"
+#include "radcl/device/program.h"
+#include "radcl/util/error.h"
+
+namespace radcl::render {
+
+namespace {
+
+rc_float4 f4(double x, double y, double z, double w) {
+  return rc_float4{static_cast<float>(x), static_cast<float>(y), static_cast<float>(z),
+                   static_cast<float>(w)};
+}
+
+Vec3d unit(const Vec3d& v) {
+  double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return l > 0 ? Vec3d{v[0] / l, v[1] / l, v[2] / l} : Vec3d{0, 0, 0};
+}
+
+// Exclusive prefix sum; returns the total.
+std::uint32_t prefix_sum(std::vector<std::uint32_t>& v) {
+  std::uint32_t sum = 0;
+  for (std::uint32_t& x : v) {
+    std::uint32_t c = x;
+    x = sum;
+    sum += c;
+  }
+  return sum;
+}
+
+template <class T> device::Buffer upload(device::Context& ctx, const std::vector<T>& v) {
+  return v.empty() ? device::Buffer(ctx, sizeof(T)) : device::Buffer::from(ctx, v);
+}
+
+} // namespace
+
+struct Renderer::Impl {
+  const scene::LoadedScene& scene;
+  RenderSettings settings;
+  device::Context& ctx;
+  geometry::SceneGeometry geom;
+  CompiledScene cs;
+  device::Program program;
+  device::Kernel count, shade, accumulate;
+  device::Buffer surfaces, materials, args, sources, verts, params;
+  Vec3d centre;
+
+  Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
+      : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
+        program(c, cs.features.program({"render/shade.cl"})), count(program.kernel("rc_count")),
+        shade(program.kernel("rc_shade")), accumulate(program.kernel("rc_accumulate")),
+        surfaces(upload(c, cs.surfaces)), materials(upload(c, cs.materials)),
+        args(upload(c, cs.args)), sources(upload(c, cs.sources.sources)),
+        verts(upload(c, cs.sources.verts)), params(c, sizeof(rc_params)), centre(geom.centre()) {
+    rc_params p{};
+    p.av = f4(st.av[0], st.av[1], st.av[2], st.lw);
+    p.direct = f4(st.ds, st.dj, st.dt, st.dc);
+    // Rays leave surfaces this far along; the kernels work in float, so never below what
+    // float resolves at the scene's size.
+    auto b = geom.bounds();
+    double size = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2], 1e-3});
+    p.spec = f4(st.ss, st.st, std::max(geom.epsilon(), 4e-7 * size), 0);
+    p.seed = st.seed;
+    p.lr = st.lr;
+    p.flags =
+        (st.dv ? RC_PF_DV : 0u) | (st.bv ? RC_PF_BV : 0u) | (st.irradiance_i ? RC_PF_IRRAD_I : 0u);
+    p.ab = static_cast<std::uint32_t>(st.ab);
+    p.nsources = static_cast<std::uint32_t>(cs.sources.sources.size());
+    p.irradiance_material = cs.irradiance_material;
+    p.ad = static_cast<std::uint32_t>(std::max(0, st.ad));
+    params.write(&p, sizeof p);
+  }
+
+  void set_scene_args(device::Kernel& k, unsigned first) {
+    k.arg(first, surfaces)
+        .arg(first + 1, materials)
+        .arg(first + 2, args)
+        .arg(first + 3, sources)
+        .arg(first + 4, verts)
+        .arg(first + 5, params);
+  }
+
+  // The device record of a geometry answer; a miss may still hit a distant source.
+  rc_hit to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h) const {
+    rc_hit out{};
+    out.surface = RC_NONE;
+    out.source = RC_NONE;
+    if (h) {
+      out.pos = f4(h->point[0] - centre[0], h->point[1] - centre[1], h->point[2] - centre[2], h->t);
+      out.nrm = f4(h->normal[0], h->normal[1], h->normal[2], 0);
+      out.uv = f4(h->u, h->v, 0, 0);
+      out.surface = cs.surface_of(*h);
+      out.prim = h->prim;
+      out.front = h->front ? 1 : 0;
+    } else {
+      out.pos = f4(0, 0, 0, -1);
+      out.front = 1;
+      // Radiance picks the distant source containing the direction; the smallest wins (the
+      // sun over the sky dome).
+      Vec3d d = unit(ray.dir);
+      double best = 1e300;
+      for (const geometry::DistantSource& s : geom.distant_sources()) {
+        double c = d[0] * s.direction[0] + d[1] * s.direction[1] + d[2] * s.direction[2];
+        if (2 * M_PI * (1 - c) <= s.solid_angle && s.solid_angle < best) {
+          std::uint32_t surf = cs.placement_base[0] + static_cast<std::uint32_t>(s.object);
+          if (cs.surfaces[surf].material == RC_NONE) continue;
+          best = s.solid_angle;
+          out.surface = surf;
+        }
+      }
+    }
+    if (out.surface < cs.surfaces.size()) out.source = cs.surfaces[out.surface].source;
+    return out;
+  }
+
+  void render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
+    if (results.size() != rays.size()) throw FatalError("renderer: result span size mismatch");
+    std::size_t wave = std::max<std::size_t>(1, settings.wave_size);
+    for (std::size_t first = 0; first < rays.size(); first += wave) {
+      std::size_t n = std::min(wave, rays.size() - first);
+      render_batch(rays.subspan(first, n), results.subspan(first, n), first);
+    }
+  }
+
+  void render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
+                    std::size_t first_index) {
+    std::vector<rc_ray> queue(prim.size());
+    std::vector<rc_hit> hits;
+    std::vector<Vec3d> sums(prim.size(), Vec3d{0, 0, 0});
+    for (std::size_t i = 0; i < prim.size(); ++i) {
+      Vec3d d = unit(prim[i].dir);
+      Vec3d o = prim[i].org;
+      res[i] = PrimaryResult{};
+      res[i].point = o;
+      rc_ray& r = queue[i];
+      r.org = f4(o[0] - centre[0], o[1] - centre[1], o[2] - centre[2], 0);
+      r.dir = f4(d[0], d[1], d[2], prim[i].tmax > 0 ? prim[i].tmax : INFINITY);
+      r.coef = f4(1, 1, 1, 1);
+      r.primary = static_cast<std::uint32_t>(first_index + i);
+      r.flags = RC_RAY_PRIMARY;
+    }
+    if (settings.irradiance_I) {
+      // The measurement point is a diffuse meter facing the given direction (1e-4 along it,
+      // where Radiance's reversed primary ray meets it).
+      hits.resize(prim.size());
+      for (std::size_t i = 0; i < prim.size(); ++i) {
+        Vec3d d = unit(prim[i].dir);
+        Vec3d p = {prim[i].org[0] + 1e-4 * d[0], prim[i].org[1] + 1e-4 * d[1],
+                   prim[i].org[2] + 1e-4 * d[2]};
+        rc_hit& h = hits[i];
+        h = rc_hit{};
+        h.pos = f4(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2], 1e-5);
+        h.nrm = f4(d[0], d[1], d[2], 0);
+        h.surface = RC_SURF_IRRADIANCE;
+        h.source = RC_NONE;
+        h.front = 1;
+        queue[i].dir = f4(-d[0], -d[1], -d[2], INFINITY);
+      }
+    }
+
+    bool first_wave = true;
+    while (!queue.empty()) {
+      std::size_t n = queue.size();
+      if (!(first_wave && settings.irradiance_I)) trace(queue, hits, res, first_wave, first_index);
+      first_wave = false;
+
+      device::Buffer brays = device::Buffer::from(ctx, queue);
+      device::Buffer bhits = device::Buffer::from(ctx, hits);
+      device::Buffer bnshadow(ctx, n * 4), bnspawn(ctx, n * 4);
+      std::uint32_t un = static_cast<std::uint32_t>(n);
+      count.arg(0, brays).arg(1, bhits).arg(2, un);
+      set_scene_args(count, 3);
+      count.arg(9, bnshadow).arg(10, bnspawn);
+      ctx.run(count, n);
+      std::vector<std::uint32_t> shadow_off = bnshadow.to_vector<std::uint32_t>(n);
+      std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
+      std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
+
+      device::Buffer bsoff = device::Buffer::from(ctx, shadow_off);
+      device::Buffer bpoff = device::Buffer::from(ctx, spawn_off);
+      device::Buffer bshadows(ctx, std::max<std::size_t>(nshadow, 1) * sizeof(rc_shadow));
+      device::Buffer bspawned(ctx, std::max<std::size_t>(nspawn, 1) * sizeof(rc_ray));
+      device::Buffer bimm(ctx, n * sizeof(rc_float4));
+      shade.arg(0, brays).arg(1, bhits).arg(2, un);
+      set_scene_args(shade, 3);
+      shade.arg(9, bsoff).arg(10, bpoff).arg(11, bshadows).arg(12, bspawned).arg(13, bimm);
+      ctx.run(shade, n);
+
+      std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);
+      std::vector<std::uint8_t> blocked = test_shadows(shadows);
+      device::Buffer bblocked = upload(ctx, blocked);
+      device::Buffer btotal(ctx, n * sizeof(rc_float4));
+      accumulate.arg(0, bimm)
+          .arg(1, bsoff)
+          .arg(2, bshadows)
+          .arg(3, bblocked)
+          .arg(4, un)
+          .arg(5, nshadow)
+          .arg(6, btotal);
+      ctx.run(accumulate, n);
+      std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        Vec3d& s = sums[queue[i].primary - first_index];
+        s[0] += total[i].x;
+        s[1] += total[i].y;
+        s[2] += total[i].z;
+      }
+      queue = bspawned.to_vector<rc_ray>(nspawn);
+    }
+    for (std::size_t i = 0; i < prim.size(); ++i)
+      res[i].value = sums[i];
+  }
+
+  // Embree over the wave; depth-0 hits also fill the primaries' geometric results.
+  void trace(const std::vector<rc_ray>& queue, std::vector<rc_hit>& hits,
+             std::span<PrimaryResult> res, bool primaries, std::size_t first_index) {
+    std::size_t n = queue.size();
+    std::vector<geometry::Ray> rays(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const rc_ray& r = queue[i];
+      rays[i].org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
+      rays[i].dir = {r.dir.x, r.dir.y, r.dir.z};
+      rays[i].tmin = r.org.w;
+      rays[i].tmax = std::isfinite(r.dir.w) ? r.dir.w : 1e300;
+    }
+    std::vector<std::optional<geometry::Hit>> gh(n);
+    geom.intersect(rays, gh);
+    hits.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      hits[i] = to_device(rays[i], gh[i]);
+    if (!primaries) return;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!gh[i]) continue;
+      PrimaryResult& r = res[queue[i].primary - first_index];
+      r.hit = true;
+      r.t = gh[i]->t;
+      r.point = gh[i]->point;
+      r.normal = gh[i]->normal;
+      r.surface = hits[i].surface;
+    }
+  }
+
+  // A shadow ray counts if it reaches its source: for a local source the first thing it meets
+  // must be that source's surface; for a distant one it must meet nothing.
+  std::vector<std::uint8_t> test_shadows(const std::vector<rc_shadow>& shadows) {
+    std::size_t n = shadows.size();
+    std::vector<geometry::Ray> rays(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const rc_shadow& s = shadows[i];
+      const rc_source& src = cs.sources.sources[s.source];
+      rays[i].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
+      rays[i].dir = {s.dir.x, s.dir.y, s.dir.z};
+      rays[i].tmin = s.org.w;
+      rays[i].tmax = src.kind == RC_SRC_DISTANT ? 1e300 : s.dir.w * 1.001 + 1e-3;
+    }
+    std::vector<std::optional<geometry::Hit>> gh(n);
+    geom.intersect(rays, gh);
+    std::vector<std::uint8_t> blocked(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const rc_source& src = cs.sources.sources[shadows[i].source];
+      if (src.kind == RC_SRC_DISTANT)
+        blocked[i] = gh[i].has_value();
+      else
+        blocked[i] = !gh[i] || cs.surface_of(*gh[i]) != src.surface;
+    }
+    return blocked;
+  }
+};
+
+Renderer::Renderer(const scene::LoadedScene& scene, const RenderSettings& settings,
+                   device::Context& ctx)
+    : impl_(std::make_unique<Impl>(scene, settings, ctx)) {}
+Renderer::~Renderer() = default;
+void Renderer::render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
+  impl_->render(rays, results);
+}
+const CompiledScene& Renderer::compiled() const {
+  return impl_->cs;
+}
+const geometry::SceneGeometry& Renderer::geometry() const {
+  return impl_->geom;
+}
+
+} // namespace radcl::render

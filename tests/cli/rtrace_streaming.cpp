@@ -1,0 +1,78 @@
+// rtrace as a co-process: each answer arrives before the next ray is sent.
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "test_env.h"
+
+namespace {
+
+struct CoProcess {
+  pid_t pid = -1;
+  int to = -1, from = -1;
+  CoProcess(const std::string& dir, const std::vector<std::string>& argv) {
+    int in[2], out[2];
+    EXPECT_EQ(pipe(in), 0);
+    EXPECT_EQ(pipe(out), 0);
+    pid = fork();
+    if (pid == 0) {
+      dup2(in[0], 0);
+      dup2(out[1], 1);
+      close(in[1]);
+      close(out[0]);
+      if (chdir(dir.c_str()) != 0) _exit(127);
+      std::vector<char*> a;
+      for (const std::string& s : argv)
+        a.push_back(const_cast<char*>(s.c_str()));
+      a.push_back(nullptr);
+      execv(a[0], a.data());
+      _exit(127);
+    }
+    close(in[0]);
+    close(out[1]);
+    to = in[1];
+    from = out[0];
+  }
+  // One line of output, waiting at most `ms`; "" on timeout.
+  std::string read_line(int ms) {
+    std::string line;
+    char c;
+    while (true) {
+      pollfd p{from, POLLIN, 0};
+      if (poll(&p, 1, ms) <= 0) return "";
+      if (read(from, &c, 1) != 1) return line;
+      if (c == '\n') return line;
+      line += c;
+    }
+  }
+  int finish() {
+    close(to);
+    close(from);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+};
+
+} // namespace
+
+TEST(RtraceStreaming, AnswersEachRayBeforeTheNext) {
+  CoProcess p(radcl::test::data("scenes"), {radcl::test::bin_dir() + "/rtrace", "-h", "-I", "-ab",
+                                            "0", "-u-", "-ds", "0", "luminaires.oct"});
+  const char* rays[] = {"1.5 1.5 0.75 0 0 1\n", "4 3 0.75 0 0 1\n", "6.5 4.5 0.75 0 0 1\n"};
+  for (const char* r : rays) {
+    ASSERT_EQ(write(p.to, r, std::strlen(r)), static_cast<ssize_t>(std::strlen(r)));
+    // Generous limit: the first answer includes building the device program.
+    std::string line = p.read_line(60000);
+    ASSERT_FALSE(line.empty()) << "no answer to " << r;
+    double v[3];
+    ASSERT_EQ(std::sscanf(line.c_str(), "%le %le %le", &v[0], &v[1], &v[2]), 3) << line;
+    EXPECT_GT(v[1], 0.0) << line;
+  }
+  EXPECT_EQ(p.finish(), 0);
+}

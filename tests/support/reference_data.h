@@ -1,0 +1,22 @@
+// Readers for the reference set's text files (sensor grids, rtrace outputs).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace radcl::test {
+
+// Rows of whitespace-separated numbers; '#' starts a comment line.
+std::vector<std::vector<double>> read_table(const std::string& path);
+// Sensor file: 6 numbers per line (origin, direction).
+std::vector<std::array<double, 6>> read_rays(const std::string& path);
+// rtrace -ov output: 3 numbers per line.
+std::vector<std::array<double, 3>> read_rgb(const std::string& path);
+
+// Illuminance-style scalar of an RGB triple (Radiance's 179 lm/W luminous efficacy weights).
+inline double lux(const std::array<double, 3>& c) {
+  return 179.0 * (0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2]);
+}
+
+} // namespace radcl::test
