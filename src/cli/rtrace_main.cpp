@@ -186,6 +186,16 @@ int rtrace_main(int argc, char** argv) {
   options::check_output_spec(cmd.opt.output_spec, spec, cmd.opt.render,
                              cmd.opt.immediate_irradiance);
 
+  // Refuse what would silently give other answers than Radiance's.
+  if (spec.trace_mode()) throw FatalError("trace output (-ot/-oT) is not supported yet");
+  if (cmd.opt.persist != options::RtraceOptions::Persist::None)
+    throw FatalError("persistent mode (-P/-PP) is not supported yet");
+  if (cmd.opt.render.ambient_list.kind != options::ModifierList::Kind::None &&
+      !cmd.opt.render.ambient_list.names.empty())
+    throw FatalError("ambient include/exclude lists (-ae/-ai/-aE/-aI) are not supported yet");
+  if (!cmd.opt.render.photon_maps.empty()) throw FatalError("photon maps (-ap) are not supported");
+  if (cmd.opt.render.ambient_value_weight > 0)
+    warning("-aw is not supported yet: the ambient value is used as given");
   if (cmd.opt.render.ambient_accuracy > 0 && cmd.opt.render.ambient_bounces > 0)
     warning("irradiance cache not available yet: ambient computed without it (as -aa 0)");
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
