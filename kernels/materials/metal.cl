@@ -15,5 +15,6 @@ static inline rc_ward_iso rc_metal_setup(float3 color, float spec, float rough, 
     m.specular = color * spec;
   }
   m.diffuse = color * (1.0f - s);
+  rc_ward_iso_opaque(&m);
   return m;
 }

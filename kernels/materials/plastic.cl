@@ -11,5 +11,6 @@ static inline rc_ward_iso rc_plastic_setup(float3 color, float spec, float rough
   if (m.fresnel) s = spec + rc_ward_fresnel(fmax(cos1, 0.001f)) * (1.0f - spec);
   m.specular = (float3)(s);
   m.diffuse = color * (1.0f - s);
+  rc_ward_iso_opaque(&m);
   return m;
 }

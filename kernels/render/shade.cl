@@ -6,14 +6,46 @@
 #include "radcl/device_types.h"
 #include "radcl/rng.h"
 #include "render/sources.cl"
+
+/* The scene's material modules, after the shared types they use. */
 #include "generated.cl"
 
 #define RC_FTINY 1e-6f
+/* Radiance's r->crtype: the ambient/specular nature of any ancestor survives pure
+ * transmission (a sky seen through glass by an ambient ray is still not counted twice). Kept
+ * in rc_ray.flags above the kind. */
+#define RC_CR_AMBIENT 8u
+#define RC_CR_SPECULAR 16u
+static inline uint rc_crtype(uint flags) {
+  uint kind = flags & RC_RAY_KIND_MASK;
+  return (flags & ~RC_RAY_KIND_MASK) | (kind == RC_RAY_AMBIENT ? RC_CR_AMBIENT : 0u) |
+         (kind == RC_RAY_SPECULAR ? RC_CR_SPECULAR : 0u);
+}
+/* The extinction (per unit length) of the medium a ray travels in lives in its spare words:
+ * zero words mean no medium, so rays made elsewhere need not know about it. */
+static inline float3 rc_ray_medium(const rc_ray* r) {
+  return (float3)(as_float(r->pad0), as_float(r->pad1), as_float(r->pad2));
+}
+static inline float3 rc_shadow_medium(const rc_shadow* s) {
+  return (float3)(s->contrib.w, as_float(s->pad0), as_float(s->pad1));
+}
+/* Transmittance over a path of length t (t < 0: to infinity), as Radiance's
+ * rayparticipate() without scattering. */
+static inline float rc_ext1(float c, float t) {
+  if (c <= 0.0f) return 1.0f;
+  float e = t < 0.0f ? INFINITY : c * t;
+  return e <= RC_FTINY ? 1.0f : (e > 92.0f ? 0.0f : exp(-e));
+}
+static inline float3 rc_ext(float3 c, float t) {
+  return (float3)(rc_ext1(c.x, t), rc_ext1(c.y, t), rc_ext1(c.z, t));
+}
 /* Radiance's perceptual brightness weights (CIE Y of its RGB primaries). */
 static inline float rc_bright(float3 c) {
   return 0.265074126f * c.x + 0.670114631f * c.y + 0.064811243f * c.z;
 }
-static inline float rc_max3(float3 c) { return fmax(c.x, fmax(c.y, c.z)); }
+static inline float rc_max3(float3 c) {
+  return fmax(c.x, fmax(c.y, c.z));
+}
 
 typedef struct rc_scene_args {
   global const rc_surface* surfaces;
@@ -31,7 +63,17 @@ typedef struct rc_out {
   global rc_shadow* shadows;
   global rc_ray* spawned;
   float3 immediate; /* contributions that need no shadow test (emission, ambient value) */
+  float3 cext;      /* medium of the rays this hit spawns */
+  float wfac;       /* extinction estimate on their weight (Radiance's rayorigin) */
 } rc_out;
+
+static inline void rc_out_init(rc_out* o, int write) {
+  o->write = write;
+  o->nshadow = o->nspawn = 0;
+  o->immediate = (float3)(0.0f);
+  o->cext = (float3)(0.0f);
+  o->wfac = 1.0f;
+}
 
 static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
                                   float3 contrib, uint primary, uint source) {
@@ -40,9 +82,11 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
     s.org = (float4)(org, tmin);
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
+    s.contrib.w = o->cext.x; /* the medium the shadow ray starts in */
+    s.pad0 = as_uint(o->cext.y);
+    s.pad1 = as_uint(o->cext.z);
     s.primary = primary;
     s.source = source;
-    s.pad0 = s.pad1 = 0;
     o->shadows[o->nshadow] = s;
   }
   o->nshadow++;
@@ -63,7 +107,7 @@ static inline void rc_spawn(rc_out* o, const rc_ray* parent, float3 org, float3 
                             uint kind, float tmin, const rc_params* P, rc_rng_key key, uint dim,
                             uint ambient_depth) {
   float rw = fmin(rc_max3(coef), 1.0f);
-  float weight = parent->coef.w * rw;
+  float weight = parent->coef.w * rw * o->wfac;
   if (weight <= 0.0f) return;
   uint depth = parent->depth + (kind == RC_RAY_TRANSMITTED ? 0u : 1u);
   int lr = P->lr;
@@ -85,10 +129,12 @@ static inline void rc_spawn(rc_out* o, const rc_ray* parent, float3 org, float3 
     r.coef = (float4)(parent->coef.xyz * coef, weight);
     r.primary = parent->primary;
     r.depth = depth;
-    r.flags = kind;
+    r.flags = kind | rc_crtype(parent->flags);
     r.sample = rc_child_sample(parent->sample, o->nspawn);
     r.ambient_depth = ambient_depth;
-    r.pad0 = r.pad1 = r.pad2 = 0;
+    r.pad0 = as_uint(o->cext.x);
+    r.pad1 = as_uint(o->cext.y);
+    r.pad2 = as_uint(o->cext.z);
     o->spawned[o->nspawn] = r;
   }
   o->nspawn++;
@@ -114,7 +160,7 @@ static inline float2 rc_square_to_disk(float sx, float sy) {
  * left, the ambient value -av instead. (-as super-sampling is not done: it only moves samples
  * towards high-variance divisions.) */
 static void rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 acoef,
-                       const rc_params* P, rc_rng_key key) {
+                       const rc_params* P, rc_rng_key key, uint dim) {
   if (rc_bright(acoef) <= RC_FTINY) return;
   if (r->ambient_depth >= P->ab || P->ad == 0) {
     o->immediate += P->av.xyz * acoef * r->coef.xyz;
@@ -127,17 +173,16 @@ static void rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 ac
   uint ns = (uint)(sqrt((float)P->ad * wt) + 0.5f);
   if (ns < 1u) ns = 1u;
   float3 c = acoef / (float)(ns * ns);
-  float3 ux = normalize(fabs(n.x) < 0.6f ? cross(n, (float3)(1, 0, 0))
-                                        : cross(n, (float3)(0, 1, 0)));
+  float3 ux =
+      normalize(fabs(n.x) < 0.6f ? cross(n, (float3)(1, 0, 0)) : cross(n, (float3)(0, 1, 0)));
   float3 uy = cross(n, ux);
-  uint dim = 4096;
   for (uint i = 0; i < ns; ++i)
     for (uint j = 0; j < ns; ++j, dim += 3) {
-      float2 d = rc_square_to_disk((j + rc_random(key, dim)) / ns, (i + rc_random(key, dim + 1)) / ns);
+      float2 d =
+          rc_square_to_disk((j + rc_random(key, dim)) / ns, (i + rc_random(key, dim + 1)) / ns);
       float z = sqrt(fmax(0.0f, 1.0f - d.x * d.x - d.y * d.y));
       float3 dir = normalize(d.x * ux + d.y * uy + z * n);
-      rc_spawn(o, r, p, dir, c, RC_RAY_AMBIENT, P->spec.z, P, key, dim + 2,
-               r->ambient_depth + 1u);
+      rc_spawn(o, r, p, dir, c, RC_RAY_AMBIENT, P->spec.z, P, key, dim + 2, r->ambient_depth + 1u);
     }
 }
 
@@ -149,7 +194,7 @@ static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, co
   int distant = h->pos.w < 0.0f;
   if (!distant && !h->front) return (float3)(0.0f); /* only the front side emits */
   if (kind == RC_RAY_PRIMARY && !(S->params.flags & RC_PF_DV)) return (float3)(0.0f);
-  if (kind == RC_RAY_AMBIENT || kind == RC_RAY_SPECULAR) {
+  if (rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR)) {
     /* Counted by the direct calculation already, except a glow beyond its radius of
      * influence, or a glow that is no direct source at all. */
     if (m->type != RC_OBJ_GLOW) return (float3)(0.0f);
@@ -170,6 +215,8 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
   const rc_params* P = &S->params;
   float eps = P->spec.z;
   uint dim = 64;
+  /* Translucent surfaces see sources on both sides: no horizon test. */
+  float3 hn = m->trans > RC_FTINY ? (float3)(0.0f) : n;
   for (uint s = 0; s < P->nsources; ++s) {
     global const rc_source* src = S->sources + s;
     /* Radiance subdivides less for rays that matter less: -ds scales with 1/weight. */
@@ -178,7 +225,7 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
       float2 xi = (float2)(rc_random(key, dim), rc_random(key, dim + 1));
       float3 l;
       float dist, omega;
-      if (!rc_source_sample(src, S->verts, p, n, k, cells, P->direct.y, xi, &l, &dist, &omega))
+      if (!rc_source_sample(src, S->verts, p, hn, k, cells, P->direct.y, xi, &l, &dist, &omega))
         continue;
       float3 ls = rc_source_radiance(src, l, dist);
       if (rc_max3(ls) <= 0.0f) continue;
@@ -189,10 +236,50 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
   }
 }
 
-/* plastic, metal and the irradiance meter. */
+/* Continues a ray unchanged past a surface it does not see (Radiance's raytrans: a TRANS ray,
+ * no weight test, no reflection level). */
+static inline void rc_pass(rc_out* o, const rc_ray* r, const rc_hit* h, const rc_params* P,
+                           rc_rng_key key) {
+  float w = o->wfac;
+  o->wfac = 1.0f;
+  rc_spawn(o, r, h->pos.xyz, r->dir.xyz, (float3)(1.0f), RC_RAY_TRANSMITTED, P->spec.z, P, key, 7,
+           r->ambient_depth);
+  o->wfac = w;
+}
+
+/* Samples one ray in a Gaussian lobe of width alpha about `axis` (scene-format.md §3.1 step 8
+ * and its transmitted twin), up to 10 tries; reflect: the sample is a half vector. */
+static void rc_gauss_sample(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 axis,
+                            float alpha2, float3 coef, int reflect, const rc_params* P,
+                            rc_rng_key key, uint dim, uint spawn_dim) {
+  float3 d = r->dir.xyz;
+  float3 u =
+      normalize(fabs(n.x) < 0.6f ? cross((float3)(1, 0, 0), n) : cross((float3)(0, 1, 0), n));
+  float3 v = cross(n, u);
+  float alpha = sqrt(alpha2);
+  for (uint t = 0; t < 10; ++t) {
+    float u1 = rc_random(key, dim + 2 * t), u2 = rc_random(key, dim + 1 + 2 * t);
+    if (P->spec.x < 1.0f) u2 = 1.0f - P->spec.x * u2; /* -ss < 1: partial jitter */
+    float phi = 2.0f * M_PI_F * u1;
+    float tand = alpha * sqrt(-log(fmax(u2, 1e-30f)));
+    float3 dir;
+    if (reflect) {
+      float3 hv = n + tand * (cos(phi) * u + sin(phi) * v);
+      dir = d - 2.0f * dot(hv, d) / (1.0f + tand * tand) * hv;
+      if (dot(dir, n) <= 0.0f) continue;
+    } else {
+      dir = axis + tand * (cos(phi) * u + sin(phi) * v);
+      if (dot(dir, n) >= -RC_FTINY) continue;
+    }
+    rc_spawn(o, r, p, normalize(dir), coef, RC_RAY_SPECULAR, P->spec.z, P, key, spawn_dim,
+             r->ambient_depth);
+    break;
+  }
+}
+
+/* plastic, metal, trans and the irradiance meter: Radiance's normal.c. */
 static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material* mat,
-                            const rc_ray* r, const rc_hit* h, float3 n, int flat,
-                            rc_rng_key key) {
+                            const rc_ray* r, const rc_hit* h, float3 n, int flat, rc_rng_key key) {
   const rc_params* P = &S->params;
   global const float* a = S->args + mat->args;
   float3 d = r->dir.xyz;
@@ -205,49 +292,121 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
     m = rc_metal_setup(color, a[3], a[4], cos1);
   else
 #endif
+#ifdef RADCL_HAS_TRANS
+      if (mat->type == RC_OBJ_TRANS)
+    m = rc_trans_setup(color, a, cos1);
+  else
+#endif
     m = rc_plastic_setup(color, a[3], a[4], cos1);
-  float3 coef = r->coef.xyz;
+  float eps = P->spec.z;
+  int rough = m.alpha2 > RC_PURE_SPECULAR_ALPHA2;
 
-  rc_direct(S, o, &m, r, p, n, d, flat, coef, key);
+  rc_direct(S, o, &m, r, p, n, d, flat, r->coef.xyz, key);
 
   /* Ambient: the diffuse part, plus rough specular too weak to sample (Radiance folds it into
-   * the ambient coefficient). */
+   * the ambient coefficient); from the back side the diffuse transmission (all of it when the
+   * clear part is too weak to sample). */
   float3 acoef = m.diffuse;
-  int rough = m.alpha2 > RC_PURE_SPECULAR_ALPHA2;
   if (rough && rc_max3(m.specular) <= P->spec.y) acoef += m.specular;
-  rc_ambient(o, r, p, n, acoef, P, key);
+  rc_ambient(o, r, p, n, acoef, P, key, 4096);
+  if (m.tdiff > RC_FTINY) {
+    int tblt = rough && m.tspec > RC_FTINY && P->spec.y >= m.tspec - RC_FTINY;
+    rc_ambient(o, r, p, -n, m.tcolor * (tblt ? m.trans : m.tdiff), P, key, 1u << 20);
+  }
 
-  float eps = P->spec.z;
   if (!rough) {
     if (rc_max3(m.specular) > RC_FTINY)
       rc_spawn(o, r, p, d + 2.0f * cos1 * n, m.specular, RC_RAY_REFLECTED, eps, P, key, 8,
                r->ambient_depth);
-  } else if (rc_max3(m.specular) > P->spec.y) {
-    /* Importance-sample the Gaussian lobe (scene-format.md §3.1 step 8), up to 10 tries. */
-    float3 u = normalize(fabs(n.x) < 0.6f ? cross((float3)(1, 0, 0), n)
-                                         : cross((float3)(0, 1, 0), n));
-    float3 v = cross(n, u);
-    float alpha = sqrt(m.alpha2);
-    for (uint t = 0; t < 10; ++t) {
-      float u1 = rc_random(key, 10 + 2 * t), u2 = rc_random(key, 11 + 2 * t);
-      if (P->spec.x < 1.0f) u2 = 1.0f - P->spec.x * u2; /* -ss < 1: partial jitter */
-      float phi = 2.0f * M_PI_F * u1;
-      float tand = alpha * sqrt(-log(fmax(u2, 1e-30f)));
-      float3 hv = n + tand * (cos(phi) * u + sin(phi) * v);
-      float3 dir = d - 2.0f * dot(hv, d) / (1.0f + tand * tand) * hv;
-      if (dot(dir, n) <= 0.0f) continue;
-      rc_spawn(o, r, p, normalize(dir), m.specular, RC_RAY_SPECULAR, eps, P, key, 9,
+    /* Clear transmission of a purely specular trans: the ray goes on, coloured. */
+    if (m.tspec > RC_FTINY)
+      rc_spawn(o, r, p, d, m.tcolor * m.tspec, RC_RAY_TRANSMITTED, eps, P, key, 6,
                r->ambient_depth);
-      break;
-    }
+  } else {
+    if (rc_max3(m.specular) > P->spec.y)
+      rc_gauss_sample(o, r, p, n, n, m.alpha2, m.specular, 1, P, key, 10, 9);
+    /* Rough transmission above -st is sampled about the transmitted direction. */
+    if (m.tspec > RC_FTINY && P->spec.y < m.tspec - RC_FTINY)
+      rc_gauss_sample(o, r, p, n, d, m.alpha2, m.tcolor * m.tspec, 0, P, key, 40, 60);
   }
+}
+
+#ifdef RADCL_HAS_GLASS
+/* glass: one straight transmitted ray weighted by T, one mirror ray weighted by R. */
+static void rc_shade_glass(const rc_scene_args* S, rc_out* o, const rc_material* mat,
+                           const rc_ray* r, const rc_hit* h, float3 n, rc_rng_key key) {
+  const rc_params* P = &S->params;
+  float3 d = r->dir.xyz;
+  float cos1 = -dot(d, n);
+  rc_glass g = rc_glass_setup(S->args + mat->args, mat->nargs, cos1);
+  if (g.hastrans)
+    rc_spawn(o, r, h->pos.xyz, d, g.trans, RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
+             r->ambient_depth);
+  rc_spawn(o, r, h->pos.xyz, d + 2.0f * cos1 * n, g.refl, RC_RAY_REFLECTED, P->spec.z, P, key, 8,
+           r->ambient_depth);
+}
+#endif
+
+#if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
+static inline int rc_is_dielectric(uint type) {
+  return type == RC_OBJ_DIELECTRIC || type == RC_OBJ_INTERFACE;
+}
+/* dielectric, interface: the refracted ray enters the new medium; the reflected one stays in
+ * the arriving ray's (already set in o->cext). */
+static void rc_shade_dielectric(const rc_scene_args* S, rc_out* o, const rc_material* mat,
+                                const rc_ray* r, const rc_hit* h, rc_rng_key key) {
+  const rc_params* P = &S->params;
+  float3 d = r->dir.xyz;
+  rc_refraction f = rc_refract(mat->type, S->args + mat->args, d, h->nrm.xyz);
+  if (f.trans > 0.0f) {
+    float3 keep = o->cext;
+    o->cext = f.cext_out;
+    rc_spawn(o, r, h->pos.xyz, f.tdir, (float3)(f.trans), RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
+             r->ambient_depth);
+    o->cext = keep;
+  }
+  rc_spawn(o, r, h->pos.xyz, normalize(d + 2.0f * f.cos1 * f.n), (float3)(f.refl), RC_RAY_REFLECTED,
+           P->spec.z, P, key, 8, r->ambient_depth);
+}
+#else
+static inline int rc_is_dielectric(uint type) {
+  return 0;
+}
+#endif
+
+/* The medium a ray travelled in up to this hit: what it carries, unless the hit material
+ * decides (inside of a dielectric, outside of an interface). */
+static inline float3 rc_hit_medium(const rc_scene_args* S, float3 carried, const rc_material* m,
+                                   float3 d, const rc_hit* h) {
+#if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
+  if (m && rc_is_dielectric(m->type)) {
+    rc_refraction f = rc_refract(m->type, S->args + m->args, d, h->nrm.xyz);
+    if (f.set_medium) return f.cext_in;
+  }
+#endif
+  return carried;
+}
+
+/* Absorption along the ray up to its hit scales everything the ray brings back; children
+ * inherit the medium and Radiance's estimate of it on their weight. */
+static inline void rc_apply_medium(rc_out* o, rc_ray* r, float3 cext, float t) {
+  o->cext = cext;
+  if (rc_max3(cext) <= 0.0f) return;
+  r->coef.xyz *= rc_ext(cext, t);
+  float re = fmin(cext.x, fmin(cext.y, cext.z)) * (t < 0.0f ? INFINITY : t);
+  if (re > 0.1f) o->wfac = re > 92.0f ? 0.0f : exp(-re);
+}
+
+static inline int rc_transparent(uint type) {
+  return type == RC_OBJ_TRANS || type == RC_OBJ_GLASS || type == RC_OBJ_DIELECTRIC ||
+         type == RC_OBJ_INTERFACE;
 }
 
 static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) {
   const rc_params* P = &S->params;
   uint kind = r.flags & RC_RAY_KIND_MASK;
   rc_rng_key key = rc_make_key(r.primary, r.sample, r.depth, P->seed);
-  float3 coef = r.coef.xyz;
+  o->cext = rc_ray_medium(&r);
   if (h.surface == RC_NONE) return; /* nothing hit: black */
 
   if (h.surface == RC_SURF_IRRADIANCE) { /* -I measurement point */
@@ -256,59 +415,76 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
     return;
   }
   rc_surface surf = S->surfaces[h.surface];
-  if (surf.material == RC_NONE) return;
+  if (surf.material == RC_NONE) { /* void modifier: Radiance does not see the surface */
+    rc_apply_medium(o, &r, o->cext, h.pos.w);
+    if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
+    return;
+  }
   rc_material mat = S->materials[surf.material];
 
   /* illum: a source for shadow rays aimed at it, otherwise its alternate material (or
    * nothing: the ray passes through). */
-  if (mat.type == RC_OBJ_ILLUM) {
-    if (mat.alt == RC_NONE) {
-      if (h.pos.w >= 0.0f)
-        rc_spawn(o, &r, h.pos.xyz, r.dir.xyz, (float3)(1.0f), kind, P->spec.z, P, key, 7,
-                 r.ambient_depth);
-      return;
-    }
-    mat = S->materials[mat.alt];
+  if (mat.type == RC_OBJ_ILLUM && mat.alt != RC_NONE) mat = S->materials[mat.alt];
+  rc_apply_medium(o, &r, rc_hit_medium(S, o->cext, &mat, r.dir.xyz, &h), h.pos.w);
+  float3 coef = r.coef.xyz;
+  if (mat.type == RC_OBJ_ILLUM) { /* no alternate */
+    if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
+    return;
   }
-  if (mat.type == RC_OBJ_LIGHT || mat.type == RC_OBJ_GLOW || mat.type == RC_OBJ_SPOTLIGHT ||
-      mat.type == RC_OBJ_ILLUM) {
+  if (mat.type == RC_OBJ_LIGHT || mat.type == RC_OBJ_GLOW || mat.type == RC_OBJ_SPOTLIGHT) {
     o->immediate += rc_light_emission(S, &mat, &r, &h, kind) * coef;
     return;
   }
   if (h.pos.w < 0.0f) return; /* a distant source with a non-emitting material */
 
+  /* -i: primary rays (and their pure transmissions) meet diffuse irradiance meters; clear
+   * materials let them through unchanged. */
+  int flat = surf.type == RC_OBJ_POLYGON || surf.type == RC_OBJ_RING;
+  if ((P->flags & RC_PF_IRRAD_I) && (kind == RC_RAY_PRIMARY || kind == RC_RAY_TRANSMITTED) &&
+      r.depth == 0 && !(rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR))) {
+    if (rc_transparent(mat.type)) {
+      rc_pass(o, &r, &h, P, key);
+      return;
+    }
+    rc_material m = S->materials[P->irradiance_material];
+    rc_shade_normal(S, o, &m, &r, &h, h.front ? h.nrm.xyz : -h.nrm.xyz, flat, key);
+    return;
+  }
+  if (rc_is_dielectric(mat.type)) { /* both sides are real: no back-face rule */
+#if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
+    rc_shade_dielectric(S, o, &mat, &r, &h, key);
+#endif
+    return;
+  }
+
   float3 n = h.nrm.xyz;
   if (!h.front) {
     if (!(P->flags & RC_PF_BV)) { /* back faces invisible: continue through */
-      rc_spawn(o, &r, h.pos.xyz, r.dir.xyz, (float3)(1.0f), kind, P->spec.z, P, key, 7,
-                 r.ambient_depth);
+      rc_pass(o, &r, &h, P, key);
       return;
     }
     n = -n;
-  }
-  int flat = surf.type == RC_OBJ_POLYGON || surf.type == RC_OBJ_RING;
-
-  /* -i: primary rays (and their pure transmissions) meet diffuse irradiance meters. */
-  if ((P->flags & RC_PF_IRRAD_I) && (kind == RC_RAY_PRIMARY || kind == RC_RAY_TRANSMITTED) &&
-      r.depth == 0) {
-    rc_material m = S->materials[P->irradiance_material];
-    rc_shade_normal(S, o, &m, &r, &h, n, flat, key);
-    return;
   }
 
   switch (mat.type) {
   case RC_OBJ_PLASTIC:
   case RC_OBJ_METAL:
+  case RC_OBJ_TRANS:
     rc_shade_normal(S, o, &mat, &r, &h, n, flat, key);
     break;
+#ifdef RADCL_HAS_GLASS
+  case RC_OBJ_GLASS:
+    rc_shade_glass(S, o, &mat, &r, &h, n, key);
+    break;
+#endif
 #ifdef RADCL_HAS_MIRROR
   case RC_OBJ_MIRROR: {
     if (!h.front) break; /* the back of a mirror is black */
     global const float* a = S->args + mat.args;
     float3 c = (float3)(a[0], a[1], a[2]);
     float cos1 = -dot(r.dir.xyz, n);
-    rc_spawn(o, &r, h.pos.xyz, r.dir.xyz + 2.0f * cos1 * n, c, RC_RAY_REFLECTED, P->spec.z, P,
-             key, 8, r.ambient_depth);
+    rc_spawn(o, &r, h.pos.xyz, r.dir.xyz + 2.0f * cos1 * n, c, RC_RAY_REFLECTED, P->spec.z, P, key,
+             8, r.ambient_depth);
     break;
   }
 #endif
@@ -317,47 +493,42 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   }
 }
 
-#define RC_SCENE_PARAMS                                                                        \
-  global const rc_surface *surfaces, global const rc_material *materials,                      \
-      global const float *args, global const rc_source *sources, global const float4 *verts,   \
+#define RC_SCENE_PARAMS                                                                            \
+  global const rc_surface *surfaces, global const rc_material *materials,                          \
+      global const float *args, global const rc_source *sources, global const float4 *verts,       \
       global const rc_params *params
 
-#define RC_SCENE_INIT                                                                          \
-  rc_scene_args S;                                                                             \
-  S.surfaces = surfaces;                                                                       \
-  S.materials = materials;                                                                     \
-  S.args = args;                                                                               \
-  S.sources = sources;                                                                         \
-  S.verts = verts;                                                                             \
+#define RC_SCENE_INIT                                                                              \
+  rc_scene_args S;                                                                                 \
+  S.surfaces = surfaces;                                                                           \
+  S.materials = materials;                                                                         \
+  S.args = args;                                                                                   \
+  S.sources = sources;                                                                             \
+  S.verts = verts;                                                                                 \
   S.params = *params;
 
-kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint n,
-                     RC_SCENE_PARAMS, global uint* nshadow, global uint* nspawn) {
+kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
+                     global uint* nshadow, global uint* nspawn) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
   rc_out o;
-  o.write = 0;
-  o.nshadow = o.nspawn = 0;
-  o.immediate = (float3)(0.0f);
+  rc_out_init(&o, 0);
   rc_shade_ray(&S, &o, rays[i], hits[i]);
   nshadow[i] = o.nshadow;
   nspawn[i] = o.nspawn;
 }
 
-kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint n,
-                     RC_SCENE_PARAMS, global const uint* shadow_offset,
-                     global const uint* spawn_offset, global rc_shadow* shadows,
-                     global rc_ray* spawned, global float4* immediate) {
+kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
+                     global const uint* shadow_offset, global const uint* spawn_offset,
+                     global rc_shadow* shadows, global rc_ray* spawned, global float4* immediate) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
   rc_out o;
-  o.write = 1;
-  o.nshadow = o.nspawn = 0;
+  rc_out_init(&o, 1);
   o.shadows = shadows + shadow_offset[i];
   o.spawned = spawned + spawn_offset[i];
-  o.immediate = (float3)(0.0f);
   rc_shade_ray(&S, &o, rays[i], hits[i]);
   immediate[i] = (float4)(o.immediate, 0.0f);
 }
@@ -374,4 +545,119 @@ kernel void rc_accumulate(global const float4* immediate, global const uint* sha
   for (uint k = shadow_offset[i]; k < end; ++k)
     if (!blocked[k]) sum += shadows[k].contrib.xyz;
   total[i] = (float4)(sum, 0.0f);
+}
+
+/* Shadow rays through transmitting surfaces (Radiance traces them on like any ray, with the
+ * material's transmission coefficient, only along pure transmission or refraction). One step
+ * per shadow ray still under way: the host found its next hit; this decides whether it reached
+ * its source, is blocked, or continues beyond the surface with a reduced contribution. */
+#define RC_SH_BLOCKED 0u
+#define RC_SH_REACHED 1u
+#define RC_SH_CONTINUE 2u
+#define RC_SH_STATUS 3u
+#define RC_SH_BENT 4u  /* direction changed by refraction: the source must be re-checked */
+#define RC_SH_LATER 8u /* not the first segment */
+
+static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, uint state) {
+  const rc_params* P = &S->params;
+  global const rc_source* src = S->sources + s->source;
+  float3 d = s->dir.xyz;
+  float3 cext = rc_shadow_medium(s);
+  int distant = src->kind == RC_SRC_DISTANT;
+  if (h->pos.w < 0.0f || h->surface == RC_NONE) { /* nothing local hit */
+    if (distant) {
+      if ((state & RC_SH_BENT) && 2.0f * M_PI_F * (1.0f - dot(src->pos.xyz, d)) > src->axis.w)
+        return RC_SH_BLOCKED; /* refracted away from the source */
+      s->contrib.xyz *= rc_ext(cext, -1.0f);
+      return RC_SH_REACHED;
+    }
+    /* Radiance lets an aimed ray that meets nothing count; a traced one that misses not. */
+    return (state & RC_SH_LATER) ? RC_SH_BLOCKED : RC_SH_REACHED;
+  }
+  float t = h->pos.w;
+  if (!distant && h->surface == src->surface) {
+    s->contrib.xyz *= rc_ext(cext, t);
+    return RC_SH_REACHED;
+  }
+  rc_surface surf = S->surfaces[h->surface];
+  float3 coef = (float3)(1.0f);
+  float3 next_cext = cext;
+  int pass = 1;
+  if (surf.material != RC_NONE) {
+    rc_material m = S->materials[surf.material];
+    if (m.type == RC_OBJ_ILLUM) {
+      /* An illum or glow source is not seen through the front of another illum. */
+      if (src->surface != RC_NONE && (src->flags & (RC_SRCF_ILLUM | RC_SRCF_GLOW)) && h->front)
+        return RC_SH_BLOCKED;
+      if (m.alt != RC_NONE) m = S->materials[m.alt];
+    }
+    cext = rc_hit_medium(S, cext, &m, d, h);
+    next_cext = cext;
+    int back_pass = !h->front && !(P->flags & RC_PF_BV);
+    float3 n = h->front ? h->nrm.xyz : -h->nrm.xyz;
+    global const float* a = S->args + m.args;
+    switch (m.type) {
+    case RC_OBJ_ILLUM: /* without an alternate: invisible */
+      break;
+#ifdef RADCL_HAS_TRANS
+    case RC_OBJ_TRANS: {
+      if (back_pass) break;
+      rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]), a, -dot(d, n));
+      if (!rc_trans_pure(&w)) return RC_SH_BLOCKED;
+      coef = w.tcolor * w.tspec;
+      break;
+    }
+#endif
+#ifdef RADCL_HAS_GLASS
+    case RC_OBJ_GLASS: {
+      if (back_pass) break;
+      rc_glass g = rc_glass_setup(a, m.nargs, -dot(d, n));
+      if (!g.hastrans) return RC_SH_BLOCKED;
+      coef = g.trans;
+      break;
+    }
+#endif
+#if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
+    case RC_OBJ_DIELECTRIC:
+    case RC_OBJ_INTERFACE: {
+      rc_refraction f = rc_refract(m.type, a, d, h->nrm.xyz);
+      if (f.trans <= 0.0f) return RC_SH_BLOCKED; /* total internal reflection */
+      coef = (float3)(f.trans);
+      next_cext = f.cext_out;
+      if (any(f.tdir != d)) {
+        d = f.tdir;
+        state |= RC_SH_BENT;
+      }
+      break;
+    }
+#endif
+    default:
+      pass = 0;
+      break;
+    }
+  }
+  if (!pass || rc_max3(coef) <= 0.0f) return RC_SH_BLOCKED;
+  float3 c = s->contrib.xyz * rc_ext(cext, t) * coef;
+  if (rc_max3(c) <= 0.0f) return RC_SH_BLOCKED;
+  s->org = (float4)(h->pos.xyz, P->spec.z);
+  /* A straight ray still has the rest of the way to a local source; a bent one goes on until
+   * it meets something. */
+  float rest = (state & RC_SH_BENT) ? INFINITY : s->dir.w - t;
+  s->dir = (float4)(d, distant ? s->dir.w : rest);
+  s->contrib = (float4)(c, next_cext.x);
+  s->pad0 = as_uint(next_cext.y);
+  s->pad1 = as_uint(next_cext.z);
+  return (state & ~RC_SH_STATUS) | RC_SH_LATER | RC_SH_CONTINUE;
+}
+
+kernel void rc_shadow_step(global rc_shadow* shadows, global const rc_hit* hits, global uint* state,
+                           uint n, RC_SCENE_PARAMS) {
+  uint i = get_global_id(0);
+  if (i >= n) return;
+  RC_SCENE_INIT
+  rc_shadow s = shadows[i];
+  rc_hit h = hits[i];
+  uint st = rc_shadow_at(&S, &s, &h, state[i]);
+  shadows[i] = s;
+  state[i] = st;
 }

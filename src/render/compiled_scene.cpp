@@ -18,9 +18,29 @@ bool supported_material(rc_object_type t) {
   case RC_OBJ_ILLUM:
   case RC_OBJ_SPOTLIGHT:
   case RC_OBJ_MIRROR:
+  case RC_OBJ_TRANS:
+  case RC_OBJ_GLASS:
+  case RC_OBJ_DIELECTRIC:
+  case RC_OBJ_INTERFACE:
     return true;
   default:
     return false;
+  }
+}
+
+// The kernels read a fixed number of real arguments for these; Radiance refuses others.
+bool real_count_ok(rc_object_type t, std::size_t n) {
+  switch (t) {
+  case RC_OBJ_TRANS:
+    return n == 7;
+  case RC_OBJ_GLASS:
+    return n == 3 || n == 4;
+  case RC_OBJ_DIELECTRIC:
+    return n == 5;
+  case RC_OBJ_INTERFACE:
+    return n == 8;
+  default:
+    return true;
   }
 }
 
@@ -83,6 +103,9 @@ private:
     if (!supported_material(o.type))
       throw FatalError("material type \"" + std::string(scene::type_name(o.type)) + "\" of \"" +
                        o.name + "\" is not supported yet");
+    if (!real_count_ok(o.type, o.fargs.size()))
+      throw FatalError("bad number of real arguments for " + std::string(scene::type_name(o.type)) +
+                       " \"" + o.name + "\"");
     // illum and mirror name an alternate material for rays other than their own purpose.
     std::uint32_t alt = RC_NONE;
     if ((o.type == RC_OBJ_ILLUM || o.type == RC_OBJ_MIRROR) && !o.sargs.empty() &&

@@ -47,7 +47,7 @@ struct Renderer::Impl {
   geometry::SceneGeometry geom;
   CompiledScene cs;
   device::Program program;
-  device::Kernel count, shade, accumulate;
+  device::Kernel count, shade, accumulate, shadow_step;
   device::Buffer surfaces, materials, args, sources, verts, params;
   Vec3d centre;
 
@@ -55,9 +55,10 @@ struct Renderer::Impl {
       : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
         program(c, cs.features.program({"render/shade.cl"})), count(program.kernel("rc_count")),
         shade(program.kernel("rc_shade")), accumulate(program.kernel("rc_accumulate")),
-        surfaces(upload(c, cs.surfaces)), materials(upload(c, cs.materials)),
-        args(upload(c, cs.args)), sources(upload(c, cs.sources.sources)),
-        verts(upload(c, cs.sources.verts)), params(c, sizeof(rc_params)), centre(geom.centre()) {
+        shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
+        materials(upload(c, cs.materials)), args(upload(c, cs.args)),
+        sources(upload(c, cs.sources.sources)), verts(upload(c, cs.sources.verts)),
+        params(c, sizeof(rc_params)), centre(geom.centre()) {
     rc_params p{};
     p.av = f4(st.av[0], st.av[1], st.av[2], st.lw);
     p.direct = f4(st.ds, st.dj, st.dt, st.dc);
@@ -193,7 +194,8 @@ struct Renderer::Impl {
       ctx.run(shade, n);
 
       std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);
-      std::vector<std::uint8_t> blocked = test_shadows(shadows);
+      std::vector<std::uint8_t> blocked = trace_shadows(shadows);
+      if (nshadow > 0) bshadows.write(shadows.data(), nshadow * sizeof(rc_shadow));
       device::Buffer bblocked = upload(ctx, blocked);
       device::Buffer btotal(ctx, n * sizeof(rc_float4));
       accumulate.arg(0, bimm)
@@ -246,28 +248,65 @@ struct Renderer::Impl {
     }
   }
 
-  // A shadow ray counts if it reaches its source: for a local source the first thing it meets
-  // must be that source's surface; for a distant one it must meet nothing.
-  std::vector<std::uint8_t> test_shadows(const std::vector<rc_shadow>& shadows) {
+  // Shadow rays in steps: Embree finds each one's next hit, the kernel decides whether it
+  // reached its source, is blocked, or continues through a transmitting surface with its
+  // contribution reduced (then it is traced again from there). Each ray keeps its slot, so the
+  // result does not depend on the order of work. Survivors' final contributions are written
+  // back into `shadows`; the return value marks the blocked ones.
+  std::vector<std::uint8_t> trace_shadows(std::vector<rc_shadow>& shadows) {
     std::size_t n = shadows.size();
-    std::vector<geometry::Ray> rays(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const rc_shadow& s = shadows[i];
-      const rc_source& src = cs.sources.sources[s.source];
-      rays[i].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
-      rays[i].dir = {s.dir.x, s.dir.y, s.dir.z};
-      rays[i].tmin = s.org.w;
-      rays[i].tmax = src.kind == RC_SRC_DISTANT ? 1e300 : s.dir.w * 1.001 + 1e-3;
-    }
-    std::vector<std::optional<geometry::Hit>> gh(n);
-    geom.intersect(rays, gh);
-    std::vector<std::uint8_t> blocked(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const rc_source& src = cs.sources.sources[shadows[i].source];
-      if (src.kind == RC_SRC_DISTANT)
-        blocked[i] = gh[i].has_value();
-      else
-        blocked[i] = !gh[i] || cs.surface_of(*gh[i]) != src.surface;
+    std::vector<std::uint8_t> blocked(n, 1);
+    std::vector<std::uint32_t> slot(n), state(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+      slot[i] = static_cast<std::uint32_t>(i);
+    std::vector<rc_shadow> cur = shadows;
+    // Radiance traces shadow rays on until their weight vanishes; a glass stack that needs
+    // more steps than this contributes nothing measurable.
+    constexpr int kMaxSteps = 64;
+    for (int step = 0; step < kMaxSteps && !cur.empty(); ++step) {
+      std::size_t m = cur.size();
+      std::vector<geometry::Ray> rays(m);
+      for (std::size_t i = 0; i < m; ++i) {
+        const rc_shadow& s = cur[i];
+        const rc_source& src = cs.sources.sources[s.source];
+        rays[i].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
+        rays[i].dir = {s.dir.x, s.dir.y, s.dir.z};
+        rays[i].tmin = s.org.w;
+        rays[i].tmax =
+            src.kind == RC_SRC_DISTANT || !std::isfinite(s.dir.w) ? 1e300 : s.dir.w * 1.001 + 1e-3;
+      }
+      std::vector<std::optional<geometry::Hit>> gh(m);
+      geom.intersect(rays, gh);
+      std::vector<rc_hit> hits(m);
+      for (std::size_t i = 0; i < m; ++i)
+        hits[i] = to_device(rays[i], gh[i]);
+
+      device::Buffer bcur = device::Buffer::from(ctx, cur);
+      device::Buffer bhits = device::Buffer::from(ctx, hits);
+      device::Buffer bstate = device::Buffer::from(ctx, state);
+      std::uint32_t um = static_cast<std::uint32_t>(m);
+      shadow_step.arg(0, bcur).arg(1, bhits).arg(2, bstate).arg(3, um);
+      set_scene_args(shadow_step, 4);
+      ctx.run(shadow_step, m);
+      cur = bcur.to_vector<rc_shadow>(m);
+      state = bstate.to_vector<std::uint32_t>(m);
+
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < m; ++i) {
+        std::uint32_t status = state[i] & 3u;
+        if (status == 1u) { // reached its source
+          shadows[slot[i]].contrib = cur[i].contrib;
+          blocked[slot[i]] = 0;
+        } else if (status == 2u) { // goes on
+          cur[k] = cur[i];
+          state[k] = state[i];
+          slot[k] = slot[i];
+          ++k;
+        }
+      }
+      cur.resize(k);
+      state.resize(k);
+      slot.resize(k);
     }
     return blocked;
   }

@@ -1,0 +1,38 @@
+/* glass: a thin pane as one surface (scene-format.md §3.3). The arguments are transmissivities
+ * tn (one pass through the pane at normal incidence); the pane's reflectance and transmittance
+ * sum the series of internal reflections, per polarisation, with Fresnel at each face. */
+#ifndef RC_GLASS_CL
+#define RC_GLASS_CL
+
+#define RC_GLASS_INDEX 1.52f
+
+typedef struct rc_glass {
+  float3 trans; /* T per channel (before any pattern) */
+  float3 refl;  /* R per channel */
+  int hastrans; /* some channel transmits: otherwise opaque to shadow rays */
+} rc_glass;
+
+/* a = real arguments (3, or 4 with the index), cos1 = -d.n > 0 with n facing the ray. */
+static inline rc_glass rc_glass_setup(global const float* a, uint nargs, float cos1) {
+  rc_glass g;
+  float n = nargs >= 4u ? a[3] : RC_GLASS_INDEX;
+  float3 tn = (float3)(a[0], a[1], a[2]);
+  g.hastrans = fmax(tn.x, fmax(tn.y, tn.z)) > 1e-15f;
+  if (g.hastrans) tn = fmax(tn, (float3)(1e-15f));
+  /* Internal cosine; the path through the pane grows as 1/cos2. */
+  float n2 = n * n;
+  float cos2 = sqrt((1.0f - 1.0f / n2) + cos1 * cos1 / n2);
+  float3 t = g.hastrans ? pow(tn, (float3)(1.0f / cos2)) : tn;
+  float re = (cos1 - n * cos2) / (cos1 + n * cos2);
+  re *= re; /* TE */
+  float rm = (1.0f / cos1 - n / cos2) / (1.0f / cos1 + n / cos2);
+  rm *= rm; /* TM */
+  float3 t2 = t * t;
+  g.trans = 0.5f * (1.0f - re) * (1.0f - re) * t / (1.0f - re * re * t2) +
+            0.5f * (1.0f - rm) * (1.0f - rm) * t / (1.0f - rm * rm * t2);
+  g.refl = 0.5f * re * (1.0f + (1.0f - 2.0f * re) * t2) / (1.0f - re * re * t2) +
+           0.5f * rm * (1.0f + (1.0f - 2.0f * rm) * t2) / (1.0f - rm * rm * t2);
+  return g;
+}
+
+#endif

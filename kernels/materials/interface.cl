@@ -1,0 +1,2 @@
+/* interface: boundary between two dielectrics; shares dielectric's refraction code. */
+#include "materials/dielectric.cl"
