@@ -74,7 +74,7 @@ typedef struct rc_ray {
   rc_u32 flags;         /* RC_RAY_* kind */
   rc_u32 sample;        /* sample index within its parent, keys the random numbers */
   rc_u32 ambient_depth; /* ambient bounces taken so far (Radiance's r->rlvl for -ab) */
-  rc_u32 pad0, pad1, pad2;
+  float cext_r, cext_g, cext_b; /* extinction per unit length of the medium it travels in */
 } rc_ray;
 
 /* The host's answer for one ray of a wave (from Embree). */
@@ -140,6 +140,7 @@ typedef struct rc_shadow {
   rc_float4 org;     /* w = tmin */
   rc_float4 dir;     /* w = distance to the source sample (tmax; large for distant) */
   rc_float4 contrib; /* rgb to add, w unused */
+  rc_float4 cext;    /* extinction of the medium the shadow ray travels in (rgb), w unused */
   rc_u32 primary;
   rc_u32 source; /* source index: the ray counts only if it reaches this source unblocked */
   rc_u32 pad0;
@@ -179,7 +180,7 @@ typedef struct rc_rng_key {
   S(rc_rng_key) S(rc_params)
 #define RADCL_LAYOUT_FIELDS(F)                                                                 \
   F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
-  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, pad2)                  \
+  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b)                  \
   F(rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim)               \
   F(rc_hit, source) F(rc_hit, front)                                                           \
   F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(rc_surface, object)      \
@@ -187,7 +188,7 @@ typedef struct rc_rng_key {
   F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(rc_source, emit)    \
   F(rc_source, spot) F(rc_source, kind) F(rc_source, flags) F(rc_source, surface)              \
   F(rc_source, verts) F(rc_source, nverts) F(rc_source, spot_focus) F(rc_source, pad1)         \
-  F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, primary)              \
+  F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, cext) F(rc_shadow, primary)              \
   F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1)                                   \
   F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)    \
   F(rc_params, av) F(rc_params, direct) F(rc_params, spec) F(rc_params, seed)                  \

@@ -1,7 +1,7 @@
 /* The shading wave: one work-item per ray of the wave, with its host-computed hit. Two passes
  * run the same code: rc_count only counts the shadow rays and spawned rays each hit makes, the
  * host turns the counts into offsets, and rc_shade writes them there. Fixed offsets keep the
- * output order independent of scheduling, so results are bit-identical across devices, thread
+ * output order independent of scheduling, so results are bit-identical across runs, thread
  * counts and wave sizes. */
 #include "radcl/device_types.h"
 #include "radcl/rng.h"
@@ -21,14 +21,11 @@ static inline uint rc_crtype(uint flags) {
   return (flags & ~RC_RAY_KIND_MASK) | (kind == RC_RAY_AMBIENT ? RC_CR_AMBIENT : 0u) |
          (kind == RC_RAY_SPECULAR ? RC_CR_SPECULAR : 0u);
 }
-/* The extinction (per unit length) of the medium a ray travels in lives in its spare words:
- * zero words mean no medium, so rays made elsewhere need not know about it. */
+/* The extinction (per unit length) of the medium a ray travels in; zero means none. */
 static inline float3 rc_ray_medium(const rc_ray* r) {
-  return (float3)(as_float(r->pad0), as_float(r->pad1), as_float(r->pad2));
+  return (float3)(r->cext_r, r->cext_g, r->cext_b);
 }
-static inline float3 rc_shadow_medium(const rc_shadow* s) {
-  return (float3)(s->contrib.w, as_float(s->pad0), as_float(s->pad1));
-}
+static inline float3 rc_shadow_medium(const rc_shadow* s) { return s->cext.xyz; }
 /* Transmittance over a path of length t (t < 0: to infinity), as Radiance's
  * rayparticipate() without scattering. */
 static inline float rc_ext1(float c, float t) {
@@ -82,9 +79,8 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
     s.org = (float4)(org, tmin);
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
-    s.contrib.w = o->cext.x; /* the medium the shadow ray starts in */
-    s.pad0 = as_uint(o->cext.y);
-    s.pad1 = as_uint(o->cext.z);
+    s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
+    s.pad0 = s.pad1 = 0;
     s.primary = primary;
     s.source = source;
     o->shadows[o->nshadow] = s;
@@ -132,9 +128,9 @@ static inline void rc_spawn(rc_out* o, const rc_ray* parent, float3 org, float3 
     r.flags = kind | rc_crtype(parent->flags);
     r.sample = rc_child_sample(parent->sample, o->nspawn);
     r.ambient_depth = ambient_depth;
-    r.pad0 = as_uint(o->cext.x);
-    r.pad1 = as_uint(o->cext.y);
-    r.pad2 = as_uint(o->cext.z);
+    r.cext_r = o->cext.x;
+    r.cext_g = o->cext.y;
+    r.cext_b = o->cext.z;
     o->spawned[o->nspawn] = r;
   }
   o->nspawn++;
@@ -644,9 +640,8 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
    * it meets something. */
   float rest = (state & RC_SH_BENT) ? INFINITY : s->dir.w - t;
   s->dir = (float4)(d, distant ? s->dir.w : rest);
-  s->contrib = (float4)(c, next_cext.x);
-  s->pad0 = as_uint(next_cext.y);
-  s->pad1 = as_uint(next_cext.z);
+  s->contrib = (float4)(c, 0.0f);
+  s->cext = (float4)(next_cext, 0.0f);
   return (state & ~RC_SH_STATUS) | RC_SH_LATER | RC_SH_CONTINUE;
 }
 

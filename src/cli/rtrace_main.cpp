@@ -1,7 +1,9 @@
 // rtrace: traces rays read from standard input through a scene and writes what -o asks for,
 // with Radiance's options, formats, header and flushing rules (cli-rtrace-rpict.md §3).
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <iostream>
 #include <memory>
@@ -82,6 +84,21 @@ public:
     if (!done) process(batch);
     std::fflush(stdout);
     if (flow_.incomplete()) warning("unexpected EOF on input");
+    report();
+  }
+
+  // RADCL_STATS=1: what was traced, for benchmarks (Radiance has no such report in rtrace).
+  void report() const {
+    const char* want = std::getenv("RADCL_STATS");
+    if (!want || std::string(want) != "1") return;
+    const render::RenderStats& s = renderer_.stats();
+    double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::fprintf(stderr,
+                 "rtrace: %llu primary, %llu secondary, %llu shadow rays in %.3f s "
+                 "(%.0f rays/s)\n",
+                 static_cast<unsigned long long>(s.primary),
+                 static_cast<unsigned long long>(s.secondary),
+                 static_cast<unsigned long long>(s.shadow), secs, s.total() / secs);
   }
 
 private:
@@ -91,6 +108,7 @@ private:
   render::Renderer renderer_;
   options::RayFlow flow_;
   std::string out_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 
   // Traces and writes a batch; true when the -x/-y count has been reached.
   bool process(std::vector<PendingRay>& batch) {

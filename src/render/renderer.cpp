@@ -50,6 +50,7 @@ struct Renderer::Impl {
   device::Kernel count, shade, accumulate, shadow_step;
   device::Buffer surfaces, materials, args, sources, verts, params;
   Vec3d centre;
+  RenderStats stats;
 
   Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
       : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
@@ -233,6 +234,7 @@ struct Renderer::Impl {
     }
     std::vector<std::optional<geometry::Hit>> gh(n);
     geom.intersect(rays, gh);
+    (primaries ? stats.primary : stats.secondary) += n;
     hits.resize(n);
     for (std::size_t i = 0; i < n; ++i)
       hits[i] = to_device(rays[i], gh[i]);
@@ -277,6 +279,7 @@ struct Renderer::Impl {
       }
       std::vector<std::optional<geometry::Hit>> gh(m);
       geom.intersect(rays, gh);
+      stats.shadow += m;
       std::vector<rc_hit> hits(m);
       for (std::size_t i = 0; i < m; ++i)
         hits[i] = to_device(rays[i], gh[i]);
@@ -321,6 +324,9 @@ void Renderer::render(std::span<const PrimaryRay> rays, std::span<PrimaryResult>
 }
 const CompiledScene& Renderer::compiled() const {
   return impl_->cs;
+}
+const RenderStats& Renderer::stats() const {
+  return impl_->stats;
 }
 const geometry::SceneGeometry& Renderer::geometry() const {
   return impl_->geom;

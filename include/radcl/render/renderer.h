@@ -51,6 +51,14 @@ struct PrimaryResult {
   std::uint32_t surface = RC_NONE; // compiled surface of the first hit (names), or RC_NONE
 };
 
+// Rays traced so far (what Embree was asked), for reports and benchmarks.
+struct RenderStats {
+  std::uint64_t primary = 0;   // first-wave rays (not counted for -I meters)
+  std::uint64_t secondary = 0; // reflected, transmitted, specular and ambient rays
+  std::uint64_t shadow = 0;    // shadow-ray segments (one per surface passed)
+  std::uint64_t total() const { return primary + secondary + shadow; }
+};
+
 class Renderer {
 public:
   Renderer(const scene::LoadedScene& scene, const RenderSettings& settings, device::Context& ctx);
@@ -60,6 +68,7 @@ public:
   void render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results);
 
   const CompiledScene& compiled() const;
+  const RenderStats& stats() const;
   const geometry::SceneGeometry& geometry() const;
 
   struct Impl;
