@@ -7,6 +7,8 @@
 #include <ctime>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
 #include <tbb/global_control.h>
 #include <unistd.h>
@@ -14,8 +16,10 @@
 
 #include "fd_input.h"
 #include "radcl/device/context.h"
+#include "radcl/geometry/scene_geometry.h"
 #include "radcl/options/ray_io.h"
 #include "radcl/options/rtrace_options.h"
+#include "radcl/render/compiled_scene.h"
 #include "radcl/render/renderer.h"
 #include "radcl/scene/loader.h"
 #include "radcl/scene/raypath.h"
@@ -52,6 +56,36 @@ render::RenderSettings settings_from(const options::RtraceOptions& o) {
   return s;
 }
 
+// First intersections only, for output that needs no shading.
+struct Caster {
+  geometry::SceneGeometry geom;
+  render::CompiledScene cs;
+  explicit Caster(const scene::LoadedScene& ls)
+      : geom(ls), cs(render::compile_scene(ls, geom, false)) {}
+
+  void cast(std::span<const render::PrimaryRay> rays, std::span<render::PrimaryResult> res) {
+    std::vector<geometry::Ray> gr(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      gr[i] = {rays[i].org, rays[i].dir, 0, rays[i].tmax > 0 ? rays[i].tmax : 1e300};
+    std::vector<std::optional<geometry::Hit>> hits(rays.size());
+    geom.intersect(gr, hits);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      render::PrimaryResult& r = res[i];
+      r = render::PrimaryResult{};
+      r.point = rays[i].org;
+      if (hits[i]) {
+        r.hit = true;
+        r.t = hits[i]->t;
+        r.point = hits[i]->point;
+        r.normal = hits[i]->normal;
+        r.surface = cs.surface_of(*hits[i]);
+      } else {
+        r.surface = render::distant_surface(cs, geom, rays[i].dir);
+      }
+    }
+  }
+};
+
 struct PendingRay {
   options::Vec3 org, dir; // dir normalised; zero for a flush request
   double length = 0;      // input direction length (-ld)
@@ -59,9 +93,15 @@ struct PendingRay {
 
 class Tracer {
 public:
-  Tracer(const options::RtraceCommand& cmd, const scene::LoadedScene& ls, device::Context& ctx)
+  Tracer(const options::RtraceCommand& cmd, const scene::LoadedScene& ls, device::Context* ctx)
       : opt_(cmd.opt), spec_(options::parse_output_spec(opt_.output_spec)),
-        renderer_(ls, settings_from(opt_), ctx), flow_(opt_.xres, opt_.yres) {}
+        flow_(opt_.xres, opt_.yres) {
+    // Geometric output only: no shading, no device program (Radiance's "ray cast only").
+    if (spec_.cast_only)
+      caster_ = std::make_unique<Caster>(ls);
+    else
+      renderer_ = std::make_unique<render::Renderer>(ls, settings_from(opt_), *ctx);
+  }
 
   // Reads, traces and writes until the input ends or the -x/-y count is reached.
   void run(std::istream& in, cli::FdInputBuf& buf) {
@@ -91,7 +131,8 @@ public:
   void report() const {
     const char* want = std::getenv("RADCL_STATS");
     if (!want || std::string(want) != "1") return;
-    const render::RenderStats& s = renderer_.stats();
+    if (!renderer_) return;
+    const render::RenderStats& s = renderer_->stats();
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::fprintf(stderr,
                  "rtrace: %llu primary, %llu secondary, %llu shadow rays in %.3f s "
@@ -105,7 +146,8 @@ private:
   static constexpr std::size_t kWave = 1 << 16;
   const options::RtraceOptions& opt_;
   options::OutputSpec spec_;
-  render::Renderer renderer_;
+  std::unique_ptr<render::Renderer> renderer_;
+  std::unique_ptr<Caster> caster_;
   options::RayFlow flow_;
   std::string out_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
@@ -116,7 +158,12 @@ private:
     for (const PendingRay& p : batch)
       if (p.length > 0) rays.push_back({p.org, p.dir, opt_.limit_distance ? p.length : 0.0});
     std::vector<render::PrimaryResult> res(rays.size());
-    if (!rays.empty()) renderer_.render(rays, res);
+    if (!rays.empty()) {
+      if (renderer_)
+        renderer_->render(rays, res);
+      else
+        caster_->cast(rays, res);
+    }
     std::size_t k = 0;
     bool stop = false;
     for (const PendingRay& p : batch) {
@@ -143,7 +190,7 @@ private:
   }
 
   void write(const PendingRay& p, const render::PrimaryResult& r) {
-    const render::CompiledScene& cs = renderer_.compiled();
+    const render::CompiledScene& cs = renderer_ ? renderer_->compiled() : caster_->cs;
     options::RayOutput o;
     o.origin = p.org;
     o.direction = p.dir;
@@ -168,7 +215,9 @@ private:
         o.modifier = cs.modifier_names[r.surface];
         o.material = cs.material_names[r.surface];
       }
-    } else if (r.surface < cs.surfaces.size()) { // a distant source
+    } else if (r.surface < cs.surfaces.size()) { // a distant source faces the ray
+      for (int i = 0; i < 3; ++i)
+        o.normal[i] = o.unperturbed_normal[i] = -o.direction[i];
       o.surface = cs.surface_names[r.surface];
       o.modifier = cs.modifier_names[r.surface];
       o.material = cs.material_names[r.surface];
@@ -219,7 +268,8 @@ int rtrace_main(int argc, char** argv) {
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(std::max(1, cmd.opt.nproc)));
   scene::LoadedScene ls = scene::load_scene(inputs);
-  device::Context& ctx = device::default_context();
+  // Ray casting needs no OpenCL device at all.
+  device::Context* ctx = spec.cast_only ? nullptr : &device::default_context();
   Tracer tracer(cmd, ls, ctx);
 
   if (cmd.opt.header) {

@@ -1,5 +1,6 @@
 #include "radcl/render/compiled_scene.h"
 
+#include <cmath>
 #include <numbers>
 
 #include "radcl/scene/material_chain.h"
@@ -46,8 +47,8 @@ bool real_count_ok(rc_object_type t, std::size_t n) {
 
 class Compiler {
 public:
-  Compiler(const scene::LoadedScene& ls, const geometry::SceneGeometry& geom)
-      : ls_(ls), geom_(geom) {}
+  Compiler(const scene::LoadedScene& ls, const geometry::SceneGeometry& geom, bool shading)
+      : ls_(ls), geom_(geom), shading_(shading) {}
 
   CompiledScene run() {
     const auto& placements = geom_.placements();
@@ -66,6 +67,7 @@ public:
     push_material(RC_OBJ_PLASTIC, {pi, pi, pi, 0.0f, 0.0f}, RC_NONE);
     out_.features.add(RC_OBJ_PLASTIC);
 
+    if (!shading_) return std::move(out_); // ray casting needs surfaces and names only
     out_.sources = compile_sources(ls_.main, geom_, [&](std::int32_t obj) {
       return out_.placement_base[0] + static_cast<std::uint32_t>(obj);
     });
@@ -79,6 +81,7 @@ public:
 private:
   const scene::LoadedScene& ls_;
   const geometry::SceneGeometry& geom_;
+  bool shading_;
   CompiledScene out_;
   std::map<std::pair<const scene::SceneDescription*, std::int32_t>, std::uint32_t> ids_;
 
@@ -100,7 +103,7 @@ private:
     auto key = std::make_pair(&sd, obj);
     if (auto it = ids_.find(key); it != ids_.end()) return it->second;
     const scene::Object& o = sd.objects[obj];
-    if (!supported_material(o.type))
+    if (shading_ && !supported_material(o.type))
       throw FatalError("material type \"" + std::string(scene::type_name(o.type)) + "\" of \"" +
                        o.name + "\" is not supported yet");
     if (!real_count_ok(o.type, o.fargs.size()))
@@ -192,8 +195,26 @@ std::uint32_t CompiledScene::surface_of(const geometry::Hit& hit) const {
   return base + static_cast<std::uint32_t>(hit.object);
 }
 
-CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom) {
-  return Compiler(scene, geom).run();
+std::uint32_t distant_surface(const CompiledScene& cs, const geometry::SceneGeometry& geom,
+                              const std::array<double, 3>& dir) {
+  double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  if (len <= 0) return RC_NONE;
+  std::uint32_t found = RC_NONE;
+  double best = 1e300;
+  for (const geometry::DistantSource& s : geom.distant_sources()) {
+    double c = (dir[0] * s.direction[0] + dir[1] * s.direction[1] + dir[2] * s.direction[2]) / len;
+    if (2 * std::numbers::pi * (1 - c) > s.solid_angle || s.solid_angle >= best) continue;
+    std::uint32_t surf = cs.placement_base[0] + static_cast<std::uint32_t>(s.object);
+    if (cs.surfaces[surf].material == RC_NONE) continue;
+    best = s.solid_angle;
+    found = surf;
+  }
+  return found;
+}
+
+CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom,
+                            bool shading) {
+  return Compiler(scene, geom, shading).run();
 }
 
 } // namespace radcl::render

@@ -103,19 +103,7 @@ struct Renderer::Impl {
     } else {
       out.pos = f4(0, 0, 0, -1);
       out.front = 1;
-      // Radiance picks the distant source containing the direction; the smallest wins (the
-      // sun over the sky dome).
-      Vec3d d = unit(ray.dir);
-      double best = 1e300;
-      for (const geometry::DistantSource& s : geom.distant_sources()) {
-        double c = d[0] * s.direction[0] + d[1] * s.direction[1] + d[2] * s.direction[2];
-        if (2 * M_PI * (1 - c) <= s.solid_angle && s.solid_angle < best) {
-          std::uint32_t surf = cs.placement_base[0] + static_cast<std::uint32_t>(s.object);
-          if (cs.surfaces[surf].material == RC_NONE) continue;
-          best = s.solid_angle;
-          out.surface = surf;
-        }
-      }
+      out.surface = distant_surface(cs, geom, ray.dir);
     }
     if (out.surface < cs.surfaces.size()) out.source = cs.surfaces[out.surface].source;
     return out;
@@ -240,8 +228,9 @@ struct Renderer::Impl {
       hits[i] = to_device(rays[i], gh[i]);
     if (!primaries) return;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!gh[i]) continue;
       PrimaryResult& r = res[queue[i].primary - first_index];
+      r.surface = hits[i].surface; // also a distant source met by a miss
+      if (!gh[i]) continue;
       r.hit = true;
       r.t = gh[i]->t;
       r.point = gh[i]->point;

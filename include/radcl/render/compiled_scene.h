@@ -37,7 +37,16 @@ struct CompiledScene {
   std::vector<const scene::TriangleMesh*> placement_mesh; // mesh of a mesh placement
 };
 
-// Throws FatalError naming the material for types the renderer does not handle yet.
-CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom);
+// The compiled surface of the distant `source` a ray leaving the scene in direction `dir`
+// meets, or RC_NONE. Radiance picks the smallest source containing the direction, so the sun
+// wins over the sky dome; sources without a material are invisible.
+std::uint32_t distant_surface(const CompiledScene& cs, const geometry::SceneGeometry& geom,
+                              const std::array<double, 3>& dir);
+
+// Throws FatalError naming the material for types the renderer does not handle yet. With
+// `shading` false (ray casting only) every material is accepted, nothing is checked for
+// shading and no light sources are compiled.
+CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom,
+                            bool shading = true);
 
 } // namespace radcl::render

@@ -1,0 +1,43 @@
+// rpict's picture loop on the wavefront renderer: rays through a view, adaptive sampling in
+// the spirit of rpict's -ps/-pt (sample every ps pixels, fill in where neighbours agree,
+// trace where they don't), pixel jitter -pj, produced in bars of scanlines from the top so the
+// picture can be written and reported as it grows.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "radcl/options/view.h"
+#include "radcl/render/renderer.h"
+
+namespace radcl::render {
+
+struct PictureSettings {
+  int xres = 512, yres = 512; // final resolution (after normalize_aspect)
+  int ps = 4;                 // -ps sample spacing, clamped to 1..16
+  double pt = 0.05;           // -pt relative difference that forces a sample
+  double pj = 0.67;           // -pj pixel jitter
+  std::uint32_t seed = 0;
+  int first_row = 0; // rows (from the top) already done, for -r recovery
+};
+
+struct PictureRows {
+  int first = 0; // first row (0 = top) of this bar
+  int count = 0;
+  std::vector<std::array<float, 3>> pixels; // count x xres, top row first
+  std::vector<float> depth;                 // distance to the first hit per pixel
+};
+
+struct PictureStats {
+  std::uint64_t primary_rays = 0; // traced (the rest were interpolated)
+  std::uint64_t pixels = 0;
+};
+
+// Calls `emit` for each finished bar, top to bottom. Returns what was traced.
+PictureStats render_picture(Renderer& renderer, const options::View& view,
+                            const PictureSettings& settings,
+                            const std::function<void(const PictureRows&)>& emit);
+
+} // namespace radcl::render

@@ -1,0 +1,199 @@
+#include "radcl/render/picture.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "radcl/image/view_ray.h"
+#include "radcl/rng.h"
+
+namespace radcl::render {
+namespace {
+
+struct Sample {
+  std::array<float, 3> v{0, 0, 0};
+  float z = 0;
+  bool done = false;
+};
+
+// Radiance's test for "these two samples disagree": any channel off by more than pt relative,
+// or the depths.
+bool differ(const Sample& a, const Sample& b, double pt) {
+  for (int c = 0; c < 3; ++c) {
+    double d = std::fabs(a.v[c] - b.v[c]);
+    if (d > pt * a.v[c] || d > pt * b.v[c]) return true;
+  }
+  return 2 * std::fabs(a.z - b.z) > pt * (a.z + b.z);
+}
+
+Sample lerp(const Sample& a, const Sample& b, double t) {
+  Sample s;
+  for (int c = 0; c < 3; ++c)
+    s.v[c] = static_cast<float>(a.v[c] + t * (b.v[c] - a.v[c]));
+  s.z = static_cast<float>(a.z + t * (b.z - a.z));
+  s.done = true;
+  return s;
+}
+
+class Bar {
+public:
+  Bar(Renderer& r, const options::View& view, const PictureSettings& st, PictureStats& stats)
+      : r_(r), view_(view), st_(st), stats_(stats) {}
+
+  // Pixel (x, row) with row counted from the top; rows [top, top + n).
+  void render(int top, int n, std::vector<Sample>& grid, int step) {
+    top_ = top;
+    n_ = n;
+    grid_ = &grid;
+    const int w = st_.xres;
+    // Base samples: every `step` pixels on the bar's sampled rows, plus its last column.
+    std::vector<int> rows;
+    for (int y = 0; y < n; y += step)
+      rows.push_back(y);
+    if (rows.back() != n - 1) rows.push_back(n - 1);
+    std::vector<int> cols;
+    for (int x = 0; x < w; x += step)
+      cols.push_back(x);
+    if (cols.back() != w - 1) cols.push_back(w - 1);
+    for (int y : rows)
+      for (int x : cols)
+        want(x, y);
+    trace();
+    // Fill the sampled rows between sampled columns, then every column between sampled rows.
+    for (std::size_t k = 0; k + 1 < cols.size(); ++k)
+      for (int y : rows)
+        push_span(cols[k], y, cols[k + 1], y);
+    refine();
+    for (std::size_t k = 0; k + 1 < rows.size(); ++k)
+      for (int x = 0; x < w; ++x)
+        push_span(x, rows[k], x, rows[k + 1]);
+    refine();
+  }
+
+private:
+  struct Span {
+    int x0, y0, x1, y1;
+  };
+  Renderer& r_;
+  const options::View& view_;
+  const PictureSettings& st_;
+  PictureStats& stats_;
+  int top_ = 0, n_ = 0;
+  std::vector<Sample>* grid_ = nullptr;
+  std::vector<std::pair<int, int>> pending_;
+  std::vector<Span> spans_;
+
+  Sample& at(int x, int y) { return (*grid_)[static_cast<std::size_t>(y) * st_.xres + x]; }
+  void want(int x, int y) {
+    if (!at(x, y).done) pending_.emplace_back(x, y);
+  }
+  void push_span(int x0, int y0, int x1, int y1) {
+    if (std::abs(x1 - x0) + std::abs(y1 - y0) > 1) spans_.push_back({x0, y0, x1, y1});
+  }
+
+  // Breadth-first bisection: each level traces the midpoints of disagreeing spans in one
+  // wave and interpolates the rest, as rpict's recursive fill does one span at a time.
+  void refine() {
+    while (!spans_.empty()) {
+      std::vector<Span> next;
+      std::vector<Span> split;
+      for (const Span& s : spans_) {
+        if (differ(at(s.x0, s.y0), at(s.x1, s.y1), st_.pt)) {
+          int mx = (s.x0 + s.x1) / 2, my = (s.y0 + s.y1) / 2;
+          want(mx, my);
+          split.push_back(s);
+        } else {
+          int len = std::max(std::abs(s.x1 - s.x0), std::abs(s.y1 - s.y0));
+          for (int i = 1; i < len; ++i) {
+            int x = s.x0 + (s.x1 - s.x0) * i / len, y = s.y0 + (s.y1 - s.y0) * i / len;
+            if (!at(x, y).done) at(x, y) = lerp(at(s.x0, s.y0), at(s.x1, s.y1), double(i) / len);
+          }
+        }
+      }
+      trace();
+      for (const Span& s : split) {
+        int mx = (s.x0 + s.x1) / 2, my = (s.y0 + s.y1) / 2;
+        if (std::abs(mx - s.x0) + std::abs(my - s.y0) > 1) next.push_back({s.x0, s.y0, mx, my});
+        if (std::abs(s.x1 - mx) + std::abs(s.y1 - my) > 1) next.push_back({mx, my, s.x1, s.y1});
+      }
+      spans_ = std::move(next);
+    }
+  }
+
+  void trace() {
+    std::sort(pending_.begin(), pending_.end());
+    pending_.erase(std::unique(pending_.begin(), pending_.end()), pending_.end());
+    std::vector<PrimaryRay> rays;
+    std::vector<std::size_t> which;
+    for (auto [x, y] : pending_) {
+      int row = top_ + y;         // from the top
+      int j = st_.yres - 1 - row; // from the bottom, as view positions count
+      std::uint32_t id = static_cast<std::uint32_t>(row) * st_.xres + x;
+      rc_rng_key key = rc_make_key(id, 0, 0, st_.seed ^ 0x70696374u);
+      double h = (x + 0.5 + st_.pj * (0.5 - rc_random(key, 0))) / st_.xres;
+      double v = (j + 0.5 + st_.pj * (0.5 - rc_random(key, 1))) / st_.yres;
+      auto vr = image::view_ray(view_, h, v);
+      Sample& s = at(x, y);
+      s.done = true;
+      if (!vr) { // outside a fisheye: black at distance 0
+        s.v = {0, 0, 0};
+        s.z = 0;
+        continue;
+      }
+      rays.push_back({vr->org, vr->dir, vr->maxlen});
+      which.push_back(static_cast<std::size_t>(y) * st_.xres + x);
+    }
+    pending_.clear();
+    if (rays.empty()) return;
+    std::vector<PrimaryResult> res(rays.size());
+    r_.render(rays, res);
+    stats_.primary_rays += rays.size();
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      Sample& s = (*grid_)[which[i]];
+      for (int c = 0; c < 3; ++c)
+        s.v[c] = static_cast<float>(res[i].value[c]);
+      s.z = static_cast<float>(res[i].t);
+    }
+  }
+};
+
+} // namespace
+
+PictureStats render_picture(Renderer& renderer, const options::View& view,
+                            const PictureSettings& st,
+                            const std::function<void(const PictureRows&)>& emit) {
+  PictureStats stats;
+  const int step = std::clamp(st.ps, 1, 16);
+  // Bars tall enough to make a good wave, a multiple of the sample step.
+  int bar = std::max(step, (1 << 17) / std::max(1, st.xres));
+  bar = std::max(step, bar / step * step);
+  Bar worker(renderer, view, st, stats);
+  // Each bar shares its first row with the previous bar's last (already computed) row.
+  std::vector<Sample> carry;
+  for (int top = st.first_row; top < st.yres;) {
+    int n = std::min(bar + 1, st.yres - top + (carry.empty() ? 0 : 1));
+    int start = carry.empty() ? top : top - 1;
+    std::vector<Sample> grid(static_cast<std::size_t>(n) * st.xres);
+    if (!carry.empty()) std::copy(carry.begin(), carry.end(), grid.begin());
+    worker.render(start, n, grid, step);
+    PictureRows out;
+    int skip = carry.empty() ? 0 : 1;
+    out.first = start + skip;
+    out.count = n - skip;
+    out.pixels.resize(static_cast<std::size_t>(out.count) * st.xres);
+    out.depth.resize(out.pixels.size());
+    for (int y = skip; y < n; ++y)
+      for (int x = 0; x < st.xres; ++x) {
+        const Sample& s = grid[static_cast<std::size_t>(y) * st.xres + x];
+        std::size_t o = static_cast<std::size_t>(y - skip) * st.xres + x;
+        out.pixels[o] = s.v;
+        out.depth[o] = s.z;
+      }
+    stats.pixels += out.pixels.size();
+    emit(out);
+    carry.assign(grid.end() - st.xres, grid.end());
+    top = out.first + out.count;
+  }
+  return stats;
+}
+
+} // namespace radcl::render
