@@ -82,6 +82,49 @@ private:
   std::vector<std::pair<int, int>> pending_;
   std::vector<Span> spans_;
 
+  // -pd: the origin moves over a disc of diameter pd across the view point, the ray still
+  // passing through the point it aimed at on the focal plane (-vd's length away).
+  void aperture(image::ViewRay& r, rc_rng_key key) const {
+    const options::View& v = view_;
+    double cosd = r.dir[0] * v.direction[0] + r.dir[1] * v.direction[1] + r.dir[2] * v.direction[2];
+    if (cosd <= 1e-6) return;
+    double t = v.focal / cosd;
+    image::Vec3 focus = {r.org[0] + t * r.dir[0], r.org[1] + t * r.dir[1], r.org[2] + t * r.dir[2]};
+    // Unit vectors across the view from the direction and up vector.
+    const image::Vec3& d = v.direction;
+    image::Vec3 h = {d[1] * v.up[2] - d[2] * v.up[1], d[2] * v.up[0] - d[0] * v.up[2],
+                     d[0] * v.up[1] - d[1] * v.up[0]};
+    double hl = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+    for (double& c : h)
+      c /= hl;
+    image::Vec3 u = {h[1] * d[2] - h[2] * d[1], h[2] * d[0] - h[0] * d[2],
+                     h[0] * d[1] - h[1] * d[0]};
+    double rad = 0.5 * st_.pd * std::sqrt(rc_random(key, 4));
+    double phi = 2 * 3.14159265358979323846 * rc_random(key, 5);
+    for (int k = 0; k < 3; ++k)
+      r.org[k] += rad * (std::cos(phi) * h[k] + std::sin(phi) * u[k]);
+    image::Vec3 nd = {focus[0] - r.org[0], focus[1] - r.org[1], focus[2] - r.org[2]};
+    double l = std::sqrt(nd[0] * nd[0] + nd[1] * nd[1] + nd[2] * nd[2]);
+    for (int k = 0; k < 3; ++k)
+      r.dir[k] = nd[k] / l;
+  }
+
+  // Pixel jitter, stratified over each 8 x 8 tile: the 64 pixels of a tile take one offset
+  // from each 1/64 of [0,1) on each axis (a Latin hypercube), in an order scrambled per tile.
+  // Like Radiance's low-discrepancy sampling (-u-), it keeps the coverage of an edge crossing
+  // a tile close to its true value instead of adding per-pixel noise.
+  double stratified(int x, int row, int axis, rc_rng_key key) const {
+    std::uint32_t tile = static_cast<std::uint32_t>(row / 8) * 0x9E3779B1u ^
+                         static_cast<std::uint32_t>(x / 8) * 0x85EBCA77u ^
+                         (axis ? 0x5bd1e995u : 0u);
+    rc_rng_key tkey = rc_make_key(tile, 0x7117u, static_cast<std::uint32_t>(axis), st_.seed);
+    rc_u32x4 b = rc_random_bits(tkey, 0);
+    std::uint32_t a = (b.v[0] & 63u) | 1u, c = b.v[1] & 63u, d = b.v[2] & 63u;
+    std::uint32_t k = static_cast<std::uint32_t>((x % 8) + 8 * (row % 8));
+    std::uint32_t stratum = ((a * k + c) & 63u) ^ d; // a bijection of 0..63
+    return (stratum + rc_random(key, 2 + axis)) / 64.0;
+  }
+
   Sample& at(int x, int y) { return (*grid_)[static_cast<std::size_t>(y) * st_.xres + x]; }
   void want(int x, int y) {
     if (!at(x, y).done) pending_.emplace_back(x, y);
@@ -129,9 +172,9 @@ private:
       int j = st_.yres - 1 - row; // from the bottom, as view positions count
       std::uint32_t id = static_cast<std::uint32_t>(row) * st_.xres + x;
       rc_rng_key key = rc_make_key(id, 0, 0, st_.seed ^ 0x70696374u);
-      double h = (x + 0.5 + st_.pj * (0.5 - rc_random(key, 0))) / st_.xres;
-      double v = (j + 0.5 + st_.pj * (0.5 - rc_random(key, 1))) / st_.yres;
-      auto vr = image::view_ray(view_, h, v);
+      double h = (x + 0.5 + st_.pj * (0.5 - stratified(x, row, 0, key))) / st_.xres;
+      double v = (j + 0.5 + st_.pj * (0.5 - stratified(x, row, 1, key))) / st_.yres;
+      std::optional<image::ViewRay> vr = image::view_ray(view_, h, v);
       Sample& s = at(x, y);
       s.done = true;
       if (!vr) { // outside a fisheye: black at distance 0
@@ -139,6 +182,7 @@ private:
         s.z = 0;
         continue;
       }
+      if (st_.pd > 0) aperture(*vr, key);
       rays.push_back({vr->org, vr->dir, vr->maxlen});
       which.push_back(static_cast<std::size_t>(y) * st_.xres + x);
     }

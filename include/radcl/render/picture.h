@@ -19,6 +19,7 @@ struct PictureSettings {
   int ps = 4;                 // -ps sample spacing, clamped to 1..16
   double pt = 0.05;           // -pt relative difference that forces a sample
   double pj = 0.67;           // -pj pixel jitter
+  double pd = 0;              // -pd aperture diameter (depth of field, focus at -vd's length)
   std::uint32_t seed = 0;
   int first_row = 0; // rows (from the top) already done, for -r recovery
 };
