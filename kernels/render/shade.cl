@@ -154,13 +154,14 @@ static inline float2 rc_square_to_disk(float sx, float sy) {
 /* Indirect diffuse light without a cache (-aa 0): Radiance's stratified hemisphere of n x n
  * cosine-weighted samples, n = sqrt(-ad x weight), each carrying acoef / n^2; with no bounce
  * left, the ambient value -av instead. (-as super-sampling is not done: it only moves samples
- * towards high-variance divisions.) */
-static void rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 acoef,
-                       const rc_params* P, rc_rng_key key, uint dim) {
-  if (rc_bright(acoef) <= RC_FTINY) return;
+ * towards high-variance divisions.) Returns what it adds to the ray's own value now (the
+ * ambient value, without the ray's coefficient); sampled light comes later. */
+static float3 rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 acoef,
+                         const rc_params* P, rc_rng_key key, uint dim) {
+  if (rc_bright(acoef) <= RC_FTINY) return (float3)(0.0f);
   if (r->ambient_depth >= P->ab || P->ad == 0) {
     o->immediate += P->av.xyz * acoef * r->coef.xyz;
-    return;
+    return P->av.xyz * acoef;
   }
   /* Radiance caps the weight so that samples do not all fall below -lw. */
   float wt = r->coef.w;
@@ -180,6 +181,7 @@ static void rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 ac
       float3 dir = normalize(d.x * ux + d.y * uy + z * n);
       rc_spawn(o, r, p, dir, c, RC_RAY_AMBIENT, P->spec.z, P, key, dim + 2, r->ambient_depth + 1u);
     }
+  return (float3)(0.0f);
 }
 
 /* Visible emission of a light-type material toward the ray (scene-format.md §3.6). */
@@ -204,33 +206,7 @@ static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, co
   return rad;
 }
 
-/* Direct contributions of every source sample as shadow requests (Radiance's direct() with
- * every sample tested: -dt 0 behaviour). */
-static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, const rc_ray* r,
-                      float3 p, float3 n, float3 d, int flat, float3 coef, rc_rng_key key) {
-  const rc_params* P = &S->params;
-  float eps = P->spec.z;
-  uint dim = 64;
-  /* Translucent surfaces see sources on both sides: no horizon test. */
-  float3 hn = m->trans > RC_FTINY ? (float3)(0.0f) : n;
-  for (uint s = 0; s < P->nsources; ++s) {
-    global const rc_source* src = S->sources + s;
-    /* Radiance subdivides less for rays that matter less: -ds scales with 1/weight. */
-    uint cells = rc_source_cells(src, p, P->direct.x / fmax(r->coef.w, 1e-6f));
-    for (uint k = 0; k < cells; ++k, dim += 2) {
-      float2 xi = (float2)(rc_random(key, dim), rc_random(key, dim + 1));
-      float3 l;
-      float dist, omega;
-      if (!rc_source_sample(src, S->verts, p, hn, k, cells, P->direct.y, xi, &l, &dist, &omega))
-        continue;
-      float3 ls = rc_source_radiance(src, l, dist);
-      if (rc_max3(ls) <= 0.0f) continue;
-      float3 c = rc_ward_iso_direct(m, ls, l, omega, n, d, flat) * coef;
-      if (rc_max3(c) <= 0.0f) continue;
-      rc_emit_shadow(o, p, l, eps, dist, c, r->primary, s);
-    }
-  }
-}
+#include "render/direct.cl"
 
 /* Continues a ray unchanged past a surface it does not see (Radiance's raytrans: a TRANS ray,
  * no weight test, no reflection level). */
@@ -297,18 +273,19 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
   float eps = P->spec.z;
   int rough = m.alpha2 > RC_PURE_SPECULAR_ALPHA2;
 
-  rc_direct(S, o, &m, r, p, n, d, flat, r->coef.xyz, key);
-
   /* Ambient: the diffuse part, plus rough specular too weak to sample (Radiance folds it into
    * the ambient coefficient); from the back side the diffuse transmission (all of it when the
-   * clear part is too weak to sample). */
+   * clear part is too weak to sample). As in Radiance, before the direct part, whose -dt
+   * threshold is relative to what the ray holds already. */
   float3 acoef = m.diffuse;
   if (rough && rc_max3(m.specular) <= P->spec.y) acoef += m.specular;
-  rc_ambient(o, r, p, n, acoef, P, key, 4096);
+  float3 known = rc_ambient(o, r, p, n, acoef, P, key, 4096);
   if (m.tdiff > RC_FTINY) {
     int tblt = rough && m.tspec > RC_FTINY && P->spec.y >= m.tspec - RC_FTINY;
-    rc_ambient(o, r, p, -n, m.tcolor * (tblt ? m.trans : m.tdiff), P, key, 1u << 20);
+    known += rc_ambient(o, r, p, -n, m.tcolor * (tblt ? m.trans : m.tdiff), P, key, 1u << 20);
   }
+
+  rc_direct(S, o, &m, r, p, n, d, flat, r->coef.xyz, rc_bright(known), key);
 
   if (!rough) {
     if (rc_max3(m.specular) > RC_FTINY)
@@ -529,8 +506,8 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
   immediate[i] = (float4)(o.immediate, 0.0f);
 }
 
-/* Per ray of the wave: its immediate contribution plus its unblocked shadow contributions, in
- * a fixed order. */
+/* Per ray of the wave: its immediate contribution plus its unblocked shadow contributions and
+ * direct estimates, in a fixed order. */
 kernel void rc_accumulate(global const float4* immediate, global const uint* shadow_offset,
                           global const rc_shadow* shadows, global const uchar* blocked, uint n,
                           uint nshadows, global float4* total) {
@@ -538,8 +515,17 @@ kernel void rc_accumulate(global const float4* immediate, global const uint* sha
   if (i >= n) return;
   uint end = i + 1 < n ? shadow_offset[i + 1] : nshadows;
   float3 sum = immediate[i].xyz;
-  for (uint k = shadow_offset[i]; k < end; ++k)
-    if (!blocked[k]) sum += shadows[k].contrib.xyz;
+  for (uint k = shadow_offset[i]; k < end; ++k) {
+    if (shadows[k].source != RC_NONE) {
+      if (!blocked[k]) sum += shadows[k].contrib.xyz;
+      continue;
+    }
+    /* The estimate for untested samples (direct.cl), at the tested ones' hit ratio. */
+    uint nt = shadows[k].pad0, hits = 0;
+    for (uint j = k - nt; j < k; ++j)
+      hits += !blocked[j];
+    if (nt > 0u) sum += shadows[k].contrib.xyz * ((float)hits / (float)nt);
+  }
   total[i] = (float4)(sum, 0.0f);
 }
 

@@ -247,10 +247,15 @@ struct Renderer::Impl {
   std::vector<std::uint8_t> trace_shadows(std::vector<rc_shadow>& shadows) {
     std::size_t n = shadows.size();
     std::vector<std::uint8_t> blocked(n, 1);
-    std::vector<std::uint32_t> slot(n), state(n, 0);
+    std::vector<std::uint32_t> slot;
+    std::vector<rc_shadow> cur;
+    // Estimates and empty slots of the -dt selection (source RC_NONE) are not rays.
     for (std::size_t i = 0; i < n; ++i)
-      slot[i] = static_cast<std::uint32_t>(i);
-    std::vector<rc_shadow> cur = shadows;
+      if (shadows[i].source != RC_NONE) {
+        slot.push_back(static_cast<std::uint32_t>(i));
+        cur.push_back(shadows[i]);
+      }
+    std::vector<std::uint32_t> state(cur.size(), 0);
     // Radiance traces shadow rays on until their weight vanishes; a glass stack that needs
     // more steps than this contributes nothing measurable.
     constexpr int kMaxSteps = 64;

@@ -1,0 +1,127 @@
+/* The direct calculation (Radiance's direct()), included by shade.cl after rc_out.
+ *
+ * Every source sample with a positive potential contribution becomes a candidate shadow
+ * request. With -dt 0 all of them are tested, in source order. With -dt > 0 the candidates are
+ * sorted by potential (brightest first, in place in this hit's slots) and tested until the
+ * next -dc-governed group of untested ones falls below -dt / weight of the running total; the
+ * untested rest becomes one estimate record, which rc_accumulate scales by the hit ratio of the
+ * tested ones (Radiance's per-source hit statistics are global and order-dependent, so they
+ * are taken as equal). The shadow tests are answered after this kernel, so the running total
+ * assumes that every tested sample reaches its source.
+ *
+ * Slots: a hit reserves one per candidate plus one for the estimate (count mode cannot know how
+ * many will be tested). The tested requests come first, then the estimate (source RC_NONE,
+ * pad0 = number of tested requests before it), then empty records (source RC_NONE, pad0 0,
+ * contribution 0) that are neither traced nor added. */
+
+/* Potential brightness of a candidate, kept in its contrib.w until the selection is made. */
+static inline int rc_shadow_before(global const rc_shadow* a, global const rc_shadow* b) {
+  return a->contrib.w < b->contrib.w; /* min-heap order: the heap sort leaves them descending */
+}
+
+static inline void rc_shadow_swap(global rc_shadow* a, global rc_shadow* b) {
+  rc_shadow t = *a;
+  *a = *b;
+  *b = t;
+}
+
+static void rc_shadow_sift(global rc_shadow* g, uint root, uint n) {
+  for (;;) {
+    uint c = 2u * root + 1u;
+    if (c >= n) return;
+    if (c + 1u < n && rc_shadow_before(g + c + 1u, g + c)) ++c;
+    if (!rc_shadow_before(g + c, g + root)) return;
+    rc_shadow_swap(g + root, g + c);
+    root = c;
+  }
+}
+
+/* Heap sort by potential, brightest first; deterministic for equal keys. */
+static void rc_shadow_sort(global rc_shadow* g, uint n) {
+  for (uint i = n / 2u; i-- > 0u;)
+    rc_shadow_sift(g, i, n);
+  for (uint end = n; end-- > 1u;) {
+    rc_shadow_swap(g, g + end);
+    rc_shadow_sift(g, 0u, end);
+  }
+}
+
+/* How many of the n sorted candidates Radiance's threshold loop tests: at least 2 (MINSHADCNT),
+ * then until the next n^dc of them add less than dt / weight of the running total. */
+static uint rc_direct_ntest(global const rc_shadow* g, uint n, float known, const rc_params* P,
+                            float weight) {
+  uint check = (uint)(pow((float)n, P->direct.w) + 0.5f);
+  float thresh = P->direct.z / fmax(weight, 1e-6f);
+  float running = known;
+  uint sn = 0;
+  for (; sn < n; ++sn) {
+    if (sn >= 2u) {
+      float group = 0.0f;
+      uint end = min(n, sn + check);
+      for (uint k = sn; k < end; ++k)
+        group += g[k].contrib.w;
+      if (group < thresh * running) break;
+    }
+    running += g[sn].contrib.w;
+  }
+  return sn;
+}
+
+/* Turns this hit's candidates g[0..n) into tested requests, the estimate and empty records. */
+static void rc_direct_select(global rc_shadow* g, uint n, float known, const rc_params* P,
+                             float weight) {
+  rc_shadow_sort(g, n);
+  uint nt = rc_direct_ntest(g, n, known, P, weight);
+  float3 rest = (float3)(0.0f);
+  for (uint k = nt; k < n; ++k)
+    rest += g[k].contrib.xyz;
+  for (uint k = 0; k < nt; ++k)
+    g[k].contrib.w = 0.0f;
+  rc_shadow e = g[0];
+  e.contrib = (float4)(rest, 0.0f);
+  e.source = RC_NONE;
+  e.pad0 = nt;
+  e.pad1 = 0u;
+  g[nt] = e;
+  e.contrib = (float4)(0.0f);
+  e.pad0 = 0u;
+  for (uint k = nt + 1u; k <= n; ++k)
+    g[k] = e;
+}
+
+/* Direct contributions of every source sample (`known`: brightness of what the ray's own value
+ * already holds, Radiance's r->rcol, for the threshold). */
+static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, const rc_ray* r,
+                      float3 p, float3 n, float3 d, int flat, float3 coef, float known,
+                      rc_rng_key key) {
+  const rc_params* P = &S->params;
+  float eps = P->spec.z;
+  uint dim = 64;
+  uint first = o->nshadow;
+  int select = P->direct.z > 0.0f;
+  /* Translucent surfaces see sources on both sides: no horizon test. */
+  float3 hn = m->trans > RC_FTINY ? (float3)(0.0f) : n;
+  for (uint s = 0; s < P->nsources; ++s) {
+    global const rc_source* src = S->sources + s;
+    /* Radiance subdivides less for rays that matter less: -ds scales with 1/weight. */
+    uint cells = rc_source_cells(src, p, P->direct.x / fmax(r->coef.w, 1e-6f));
+    for (uint k = 0; k < cells; ++k, dim += 2) {
+      float2 xi = (float2)(rc_random(key, dim), rc_random(key, dim + 1));
+      float3 l;
+      float dist, omega;
+      if (!rc_source_sample(src, S->verts, p, hn, k, cells, P->direct.y, xi, &l, &dist, &omega))
+        continue;
+      float3 ls = rc_source_radiance(src, l, dist);
+      if (rc_max3(ls) <= 0.0f) continue;
+      float3 v = rc_ward_iso_direct(m, ls, l, omega, n, d, flat);
+      float3 c = v * coef;
+      if (rc_max3(c) <= 0.0f) continue;
+      rc_emit_shadow(o, p, l, eps, dist, c, r->primary, s);
+      if (select && o->write) o->shadows[o->nshadow - 1u].contrib.w = rc_bright(v);
+    }
+  }
+  uint nc = o->nshadow - first;
+  if (!select || nc == 0u) return;
+  if (o->write) rc_direct_select(o->shadows + first, nc, known, P, r->coef.w);
+  o->nshadow++; /* the estimate's slot */
+}
