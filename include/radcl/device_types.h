@@ -115,6 +115,10 @@ typedef struct rc_material {
 #define RC_SRCF_ILLUM 1u /* illum: seen as its alternate by non-shadow rays */
 #define RC_SRCF_GLOW 2u  /* glow: lights only points within emit.w of it */
 #define RC_SRCF_SPOT 4u  /* spotlight: spot.xyz direction, spot.w = cos(half angle) */
+#define RC_SRCF_VIRTUAL 8u /* image of source `parent` in mirror `mirror` (surface = the mirror's) */
+#define RC_SRCF_FOLLOW 16u /* virtual: a shadow ray must go on from the mirror to the parent (the
+                              -dp pretest found the way partly blocked); otherwise meeting the
+                              mirror is enough */
 
 /* A light source for the direct calculation (Radiance's SRCREC). */
 typedef struct rc_source {
@@ -132,8 +136,20 @@ typedef struct rc_source {
   rc_u32 verts;   /* polygon: offset of its vertices (float4) in the vertex buffer */
   rc_u32 nverts;  /* polygon: vertex count (0 for ring, sphere, cylinder, distant) */
   float spot_focus; /* spotlight: distance of the virtual focus behind the centre */
-  rc_u32 pad0, pad1;
+  rc_u32 parent;    /* virtual: the source it images (itself possibly virtual), else RC_NONE */
+  rc_u32 mirror;    /* virtual: the mirror (rc_mirror index) it is seen in, else RC_NONE */
 } rc_source;
+
+/* A planar mirror that relays light sources (Radiance's virtual sources, -dr). */
+typedef struct rc_mirror {
+  rc_float4 plane;  /* unit normal (the reflecting side) and offset: dot(plane.xyz, x) = w */
+  rc_float4 centre; /* ring: centre, w = outer radius */
+  rc_float4 refl;   /* reflectance (rgb); w = ring's inner radius */
+  rc_u32 surface;   /* compiled surface */
+  rc_u32 verts;     /* polygon: offset of its vertices in the vertex buffer */
+  rc_u32 nverts;    /* polygon: vertex count; 0 for a ring */
+  rc_u32 pad0;
+} rc_mirror;
 
 /* A shadow-ray request and the contribution it adds to its primary ray if unoccluded. */
 typedef struct rc_shadow {
@@ -176,7 +192,8 @@ typedef struct rc_rng_key {
 /* Every struct above with every field, for the host/device layout test (rc_float4's members
  * are vector components on the device, which have no address: only its size is compared). */
 #define RADCL_LAYOUT_STRUCTS(S)                                                                \
-  S(rc_float4) S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_shadow)      \
+  S(rc_float4) S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror)      \
+  S(rc_shadow)                                                                                 \
   S(rc_rng_key) S(rc_params)
 #define RADCL_LAYOUT_FIELDS(F)                                                                 \
   F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
@@ -187,7 +204,9 @@ typedef struct rc_rng_key {
   F(rc_material, type) F(rc_material, args) F(rc_material, nargs) F(rc_material, alt)          \
   F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(rc_source, emit)    \
   F(rc_source, spot) F(rc_source, kind) F(rc_source, flags) F(rc_source, surface)              \
-  F(rc_source, verts) F(rc_source, nverts) F(rc_source, spot_focus) F(rc_source, pad1)         \
+  F(rc_source, verts) F(rc_source, nverts) F(rc_source, spot_focus) F(rc_source, parent)       \
+  F(rc_source, mirror) F(rc_mirror, plane) F(rc_mirror, centre) F(rc_mirror, refl)             \
+  F(rc_mirror, surface) F(rc_mirror, verts) F(rc_mirror, nverts) F(rc_mirror, pad0)            \
   F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, cext) F(rc_shadow, primary)              \
   F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1)                                   \
   F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)    \

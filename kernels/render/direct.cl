@@ -112,6 +112,8 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
       if (!rc_source_sample(src, S->verts, p, hn, k, cells, P->direct.y, xi, &l, &dist, &omega))
         continue;
       float3 ls = rc_source_radiance(src, l, dist);
+      if (src->flags & RC_SRCF_VIRTUAL)
+        ls *= rc_virtual_path(S->sources, S->mirrors, S->verts, src, p, l);
       if (rc_max3(ls) <= 0.0f) continue;
       float3 v = rc_ward_iso_direct(m, ls, l, omega, n, d, flat);
       float3 c = v * coef;

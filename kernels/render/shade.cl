@@ -6,6 +6,7 @@
 #include "radcl/device_types.h"
 #include "radcl/rng.h"
 #include "render/sources.cl"
+#include "render/virtual.cl"
 
 /* The scene's material modules, after the shared types they use. */
 #include "generated.cl"
@@ -50,6 +51,7 @@ typedef struct rc_scene_args {
   global const float* args;
   global const rc_source* sources;
   global const float4* verts;
+  global const rc_mirror* mirrors;
   rc_params params; /* a private copy: read on every sample */
 } rc_scene_args;
 
@@ -469,7 +471,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
 #define RC_SCENE_PARAMS                                                                            \
   global const rc_surface *surfaces, global const rc_material *materials,                          \
       global const float *args, global const rc_source *sources, global const float4 *verts,       \
-      global const rc_params *params
+      global const rc_mirror *mirrors, global const rc_params *params
 
 #define RC_SCENE_INIT                                                                              \
   rc_scene_args S;                                                                                 \
@@ -478,6 +480,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   S.args = args;                                                                                   \
   S.sources = sources;                                                                             \
   S.verts = verts;                                                                                 \
+  S.mirrors = mirrors;                                                                             \
   S.params = *params;
 
 kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
@@ -546,7 +549,22 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   float3 d = s->dir.xyz;
   float3 cext = rc_shadow_medium(s);
   int distant = src->kind == RC_SRC_DISTANT;
-  if (h->pos.w < 0.0f || h->surface == RC_NONE) { /* nothing local hit */
+  if (src->flags & RC_SRCF_VIRTUAL) {
+    /* Aimed at a source's image: it must meet the mirror's front (within its outline, which
+     * is what Embree hit), then, if the pretest asked for it, go on to the imaged source. */
+    if (h->pos.w < 0.0f || h->surface == RC_NONE) return RC_SH_BLOCKED;
+    if (h->surface == src->surface) {
+      if (!h->front) return RC_SH_BLOCKED;
+      float t = h->pos.w;
+      s->contrib.xyz *= rc_ext(cext, t);
+      if (!(src->flags & RC_SRCF_FOLLOW)) return RC_SH_REACHED;
+      float3 n = h->nrm.xyz;
+      s->org = (float4)(h->pos.xyz, P->spec.z);
+      s->dir = (float4)(d - 2.0f * dot(d, n) * n, distant ? s->dir.w : s->dir.w - t);
+      s->source = src->parent;
+      return (state & ~RC_SH_STATUS) | RC_SH_LATER | RC_SH_CONTINUE;
+    }
+  } else if (h->pos.w < 0.0f || h->surface == RC_NONE) { /* nothing local hit */
     if (distant) {
       if ((state & RC_SH_BENT) && 2.0f * M_PI_F * (1.0f - dot(src->pos.xyz, d)) > src->axis.w)
         return RC_SH_BLOCKED; /* refracted away from the source */

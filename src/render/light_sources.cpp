@@ -154,6 +154,7 @@ private:
 
     rc_source s{};
     s.surface = RC_NONE;
+    s.parent = s.mirror = RC_NONE;
     s.verts = 0;
     s.spot = {0, 0, 0, -2};
     switch (o.type) {

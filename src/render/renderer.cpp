@@ -7,6 +7,7 @@
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
 #include "radcl/device/program.h"
+#include "radcl/render/virtual_sources.h"
 #include "radcl/util/error.h"
 
 namespace radcl::render {
@@ -48,7 +49,7 @@ struct Renderer::Impl {
   CompiledScene cs;
   device::Program program;
   device::Kernel count, shade, accumulate, shadow_step;
-  device::Buffer surfaces, materials, args, sources, verts, params;
+  device::Buffer surfaces, materials, args, sources, verts, mirrors, params;
   Vec3d centre;
   RenderStats stats;
 
@@ -57,9 +58,8 @@ struct Renderer::Impl {
         program(c, cs.features.program({"render/shade.cl"})), count(program.kernel("rc_count")),
         shade(program.kernel("rc_shade")), accumulate(program.kernel("rc_accumulate")),
         shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
-        materials(upload(c, cs.materials)), args(upload(c, cs.args)),
-        sources(upload(c, cs.sources.sources)), verts(upload(c, cs.sources.verts)),
-        params(c, sizeof(rc_params)), centre(geom.centre()) {
+        materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
+        centre(geom.centre()) {
     rc_params p{};
     p.av = f4(st.av[0], st.av[1], st.av[2], st.lw);
     p.direct = f4(st.ds, st.dj, st.dt, st.dc);
@@ -77,6 +77,39 @@ struct Renderer::Impl {
     p.irradiance_material = cs.irradiance_material;
     p.ad = static_cast<std::uint32_t>(std::max(0, st.ad));
     params.write(&p, sizeof p);
+    upload_sources();
+    add_virtual_sources(
+        s.main, geom,
+        [&](std::int32_t obj) { return cs.placement_base[0] + static_cast<std::uint32_t>(obj); },
+        st.dr, st.dp,
+        [&](const CompiledSources& so, const std::vector<rc_shadow>& rays) {
+          return pretest(so, rays);
+        },
+        cs.sources);
+    upload_sources();
+    p.nsources = static_cast<std::uint32_t>(cs.sources.sources.size());
+    params.write(&p, sizeof p);
+    stats = RenderStats{}; // the pretest's rays are not the caller's
+  }
+
+  void upload_sources() {
+    sources = upload(ctx, cs.sources.sources);
+    verts = upload(ctx, cs.sources.verts);
+    mirrors = upload(ctx, cs.sources.mirrors);
+  }
+
+  // The virtual-source pretest's shadow rays, against the sources made so far (`so` is
+  // cs.sources while it grows; trace_shadows reads it there).
+  std::vector<float> pretest(const CompiledSources& so, const std::vector<rc_shadow>& rays) {
+    sources = upload(ctx, so.sources);
+    verts = upload(ctx, so.verts);
+    mirrors = upload(ctx, so.mirrors);
+    std::vector<rc_shadow> sh = rays;
+    std::vector<std::uint8_t> blocked = trace_shadows(sh);
+    std::vector<float> out(sh.size());
+    for (std::size_t i = 0; i < sh.size(); ++i)
+      out[i] = blocked[i] ? 0.0f : sh[i].contrib.x;
+    return out;
   }
 
   void set_scene_args(device::Kernel& k, unsigned first) {
@@ -85,7 +118,8 @@ struct Renderer::Impl {
         .arg(first + 2, args)
         .arg(first + 3, sources)
         .arg(first + 4, verts)
-        .arg(first + 5, params);
+        .arg(first + 5, mirrors)
+        .arg(first + 6, params);
   }
 
   // The device record of a geometry answer; a miss may still hit a distant source.
@@ -166,7 +200,7 @@ struct Renderer::Impl {
       std::uint32_t un = static_cast<std::uint32_t>(n);
       count.arg(0, brays).arg(1, bhits).arg(2, un);
       set_scene_args(count, 3);
-      count.arg(9, bnshadow).arg(10, bnspawn);
+      count.arg(10, bnshadow).arg(11, bnspawn);
       ctx.run(count, n);
       std::vector<std::uint32_t> shadow_off = bnshadow.to_vector<std::uint32_t>(n);
       std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
@@ -179,7 +213,7 @@ struct Renderer::Impl {
       device::Buffer bimm(ctx, n * sizeof(rc_float4));
       shade.arg(0, brays).arg(1, bhits).arg(2, un);
       set_scene_args(shade, 3);
-      shade.arg(9, bsoff).arg(10, bpoff).arg(11, bshadows).arg(12, bspawned).arg(13, bimm);
+      shade.arg(10, bsoff).arg(11, bpoff).arg(12, bshadows).arg(13, bspawned).arg(14, bimm);
       ctx.run(shade, n);
 
       std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);

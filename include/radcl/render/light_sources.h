@@ -14,7 +14,8 @@ namespace radcl::render {
 
 struct CompiledSources {
   std::vector<rc_source> sources;
-  std::vector<rc_float4> verts; // polygon source vertices (re-centred), referenced by rc_source
+  std::vector<rc_float4> verts;   // polygon source vertices (re-centred), referenced by rc_source
+  std::vector<rc_mirror> mirrors; // mirrors of virtual sources (virtual_sources.h)
 };
 
 // One rc_source per direct light source of the main scene (scene::is_light_source) and per

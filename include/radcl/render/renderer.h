@@ -23,6 +23,8 @@ using Vec3d = std::array<double, 3>;
 // Rendering settings with Radiance's meaning (cli-rtrace-rpict.md §2); defaults are rtrace's.
 struct RenderSettings {
   double ds = 0.2, dj = 0, dt = 0.03, dc = 0.75;
+  int dr = 2;   // -dr: mirrors a virtual source may be relayed through (rpict's default is 1)
+  int dp = 512; // -dp: virtual-source pretest density (samples/sr), 0 = always follow the way
   bool dv = true, bv = true;
   double ss = 1, st = 0.15;
   Vec3d av{0, 0, 0};
