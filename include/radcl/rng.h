@@ -57,6 +57,17 @@ RC_RNG_INLINE float rc_random(rc_rng_key key, rc_u32 dim) {
   return rc_bits_to_unit(b.v[dim & 3u]);
 }
 
+/* A low-discrepancy alternative over the primary index: the R2 sequence (Roberts' generalised
+ * golden ratio, 2-D) in 32-bit fixed point, rotated per (sample, depth, seed, dimension).
+ * Consecutive primaries (neighbouring pixels) fill [0,1)^2 evenly for each dimension pair. */
+RC_RNG_INLINE float rc_random_ld(rc_rng_key key, rc_u32 dim) {
+  rc_rng_key shared = key;
+  shared.primary = 0x9E3779B9u; /* the rotation must not depend on the primary */
+  rc_u32x4 rot = rc_random_bits(shared, dim >> 2);
+  rc_u32 step = (dim & 1u) ? 0x91E10DA5u : 0xC13FA9A9u; /* 2^32 / phi2^2, 2^32 / phi2 */
+  return rc_bits_to_unit(rot.v[dim & 3u] + key.primary * step);
+}
+
 RC_RNG_INLINE rc_rng_key rc_make_key(rc_u32 primary, rc_u32 sample, rc_u32 depth, rc_u32 seed) {
   rc_rng_key k;
   k.primary = primary;

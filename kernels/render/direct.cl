@@ -106,7 +106,7 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
     /* Radiance subdivides less for rays that matter less: -ds scales with 1/weight. */
     uint cells = rc_source_cells(src, p, P->direct.x / fmax(r->coef.w, 1e-6f));
     for (uint k = 0; k < cells; ++k, dim += 2) {
-      float2 xi = (float2)(rc_random(key, dim), rc_random(key, dim + 1));
+      float2 xi = (float2)(rc_sample(P, key, dim), rc_sample(P, key, dim + 1));
       float3 l;
       float dist, omega;
       if (!rc_source_sample(src, S->verts, p, hn, k, cells, P->direct.y, xi, &l, &dist, &omega))

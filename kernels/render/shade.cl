@@ -38,6 +38,14 @@ static inline float3 rc_ext(float3 c, float t) {
   return (float3)(rc_ext1(c.x, t), rc_ext1(c.y, t), rc_ext1(c.z, t));
 }
 /* Radiance's perceptual brightness weights (CIE Y of its RGB primaries). */
+/* Random numbers for sampling decisions: with -u- (RC_PF_LOWDISC) first-hit samples follow a
+ * low-discrepancy sequence over the primary ids, as Radiance's -u- does; deeper ones and -u+
+ * use independent numbers. */
+static inline float rc_sample(const rc_params* P, rc_rng_key key, uint dim) {
+  return ((P->flags & RC_PF_LOWDISC) && key.depth == 0u) ? rc_random_ld(key, dim)
+                                                         : rc_random(key, dim);
+}
+
 static inline float rc_bright(float3 c) {
   return 0.265074126f * c.x + 0.670114631f * c.y + 0.064811243f * c.z;
 }
@@ -232,7 +240,7 @@ static void rc_gauss_sample(rc_out* o, const rc_ray* r, float3 p, float3 n, floa
   float3 v = cross(n, u);
   float alpha = sqrt(alpha2);
   for (uint t = 0; t < 10; ++t) {
-    float u1 = rc_random(key, dim + 2 * t), u2 = rc_random(key, dim + 1 + 2 * t);
+    float u1 = rc_sample(P, key, dim + 2 * t), u2 = rc_sample(P, key, dim + 1 + 2 * t);
     if (P->spec.x < 1.0f) u2 = 1.0f - P->spec.x * u2; /* -ss < 1: partial jitter */
     float phi = 2.0f * M_PI_F * u1;
     float tand = alpha * sqrt(-log(fmax(u2, 1e-30f)));

@@ -51,6 +51,9 @@ render::RenderSettings settings_from(const options::RenderOptions& r) {
   s.irradiance_i = r.irradiance;
   s.seed =
       r.uncorrelated ? static_cast<std::uint32_t>(std::time(nullptr) ^ (::getpid() << 16)) : 0u;
+  s.low_discrepancy = !r.uncorrelated;
+  s.dr = r.direct_relays;
+  s.dp = r.direct_pretest;
   return s;
 }
 
@@ -173,7 +176,8 @@ int rpict_main(int argc, char** argv) {
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               std::max<std::size_t>(1, std::thread::hardware_concurrency()));
   scene::LoadedScene ls = scene::load_scene({octree});
-  render::Renderer renderer(ls, settings_from(opt.render), device::default_context());
+  const render::RenderSettings settings = settings_from(opt.render);
+  render::Renderer renderer(ls, settings, device::default_context());
 
   image::PictureHeader header;
   for (const std::string& l : ls.main.header)
@@ -204,7 +208,7 @@ int rpict_main(int argc, char** argv) {
   ps.pt = opt.pixel_threshold;
   ps.pj = opt.pixel_jitter;
   ps.pd = opt.pixel_aperture;
-  ps.seed = settings_from(opt.render).seed;
+  ps.seed = settings.seed;
   ps.first_row = old ? old->complete : 0;
 
   cli::Progress progress(args[0], opt.report_interval);

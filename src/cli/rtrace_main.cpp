@@ -53,6 +53,8 @@ render::RenderSettings settings_from(const options::RtraceOptions& o) {
   // -u+: a new seed every run; -u-: the same numbers every run.
   s.seed =
       r.uncorrelated ? static_cast<std::uint32_t>(std::time(nullptr) ^ (::getpid() << 16)) : 0u;
+  s.dr = r.direct_relays;
+  s.dp = r.direct_pretest;
   return s;
 }
 

@@ -13,6 +13,7 @@ struct Sample {
   std::array<float, 3> v{0, 0, 0};
   float z = 0;
   bool done = false;
+  bool traced = false; // traced (not interpolated)
 };
 
 // Radiance's test for "these two samples disagree": any channel off by more than pt relative,
@@ -40,7 +41,8 @@ public:
       : r_(r), view_(view), st_(st), stats_(stats) {}
 
   // Pixel (x, row) with row counted from the top; rows [top, top + n).
-  void render(int top, int n, std::vector<Sample>& grid, int step) {
+  // `fixed` leading rows are already final (the previous bar's last row).
+  void render(int top, int n, std::vector<Sample>& grid, int step, int fixed) {
     top_ = top;
     n_ = n;
     grid_ = &grid;
@@ -67,6 +69,7 @@ public:
       for (int x = 0; x < w; ++x)
         push_span(x, rows[k], x, rows[k + 1]);
     refine();
+    if (st_.pj > 0) antialias(fixed);
   }
 
 private:
@@ -109,20 +112,80 @@ private:
       r.dir[k] = nd[k] / l;
   }
 
-  // Pixel jitter, stratified over each 8 x 8 tile: the 64 pixels of a tile take one offset
-  // from each 1/64 of [0,1) on each axis (a Latin hypercube), in an order scrambled per tile.
-  // Like Radiance's low-discrepancy sampling (-u-), it keeps the coverage of an edge crossing
-  // a tile close to its true value instead of adding per-pixel noise.
-  double stratified(int x, int row, int axis, rc_rng_key key) const {
+  // Pixel jitter, stratified over each 8 x 8 tile of pixels: the tile's 64 jitter offsets
+  // form a multi-jittered set (one in each 1/8 x 1/8 cell of the pixel square, and one in
+  // each 1/64 column and row), dealt to the pixels in an order scrambled per tile. Like
+  // Radiance's low-discrepancy sampling (-u-), this keeps the coverage of an edge crossing a
+  // tile near its true value instead of adding per-pixel noise.
+  std::array<double, 2> jitter(int x, int row, rc_rng_key key) const {
     std::uint32_t tile = static_cast<std::uint32_t>(row / 8) * 0x9E3779B1u ^
-                         static_cast<std::uint32_t>(x / 8) * 0x85EBCA77u ^
-                         (axis ? 0x5bd1e995u : 0u);
-    rc_rng_key tkey = rc_make_key(tile, 0x7117u, static_cast<std::uint32_t>(axis), st_.seed);
-    rc_u32x4 b = rc_random_bits(tkey, 0);
+                         static_cast<std::uint32_t>(x / 8) * 0x85EBCA77u;
+    rc_u32x4 b = rc_random_bits(rc_make_key(tile, 0x7117u, 0, st_.seed), 0);
     std::uint32_t a = (b.v[0] & 63u) | 1u, c = b.v[1] & 63u, d = b.v[2] & 63u;
     std::uint32_t k = static_cast<std::uint32_t>((x % 8) + 8 * (row % 8));
-    std::uint32_t stratum = ((a * k + c) & 63u) ^ d; // a bijection of 0..63
-    return (stratum + rc_random(key, 2 + axis)) / 64.0;
+    std::uint32_t cell = ((a * k + c) & 63u) ^ d; // a bijection of 0..63
+    std::uint32_t cx = cell % 8, cy = cell / 8;
+    return {(cx + (cy + rc_random(key, 2)) / 8.0) / 8.0,
+            (cy + (cx + rc_random(key, 3)) / 8.0) / 8.0};
+  }
+
+  // Traced pixels on an edge (a 4-neighbour differs by more than -pt) get four more jittered
+  // samples, one per quarter of the jitter square, averaged with the first. One sample per
+  // pixel, as rpict takes, makes an edge's coverage a coin toss per pixel; this makes it the
+  // pixel's actual coverage, at the cost of rays on edges only.
+  void antialias(int fixed) {
+    const int w = st_.xres;
+    std::vector<std::pair<int, int>> edge;
+    for (int y = fixed; y < n_; ++y)
+      for (int x = 0; x < w; ++x) {
+        const Sample& s = at(x, y);
+        if (!s.traced) continue;
+        bool e = (x > 0 && differ(s, at(x - 1, y), st_.pt)) ||
+                 (x + 1 < w && differ(s, at(x + 1, y), st_.pt)) ||
+                 (y > 0 && differ(s, at(x, y - 1), st_.pt)) ||
+                 (y + 1 < n_ && differ(s, at(x, y + 1), st_.pt));
+        if (e) edge.emplace_back(x, y);
+      }
+    if (edge.empty()) return;
+    const std::uint32_t npix = static_cast<std::uint32_t>(st_.xres) * st_.yres;
+    std::vector<PrimaryRay> rays;
+    std::vector<std::size_t> which;
+    for (auto [x, y] : edge) {
+      int row = top_ + y, j = st_.yres - 1 - row;
+      std::uint32_t pix = static_cast<std::uint32_t>(row) * st_.xres + x;
+      for (std::uint32_t q = 0; q < 4; ++q) {
+        std::uint32_t id = pix + (q + 1) * npix;
+        rc_rng_key key = rc_make_key(id, 0, 0, st_.seed ^ 0x70696374u);
+        double ux = ((q & 1) + rc_random(key, 2)) / 2, uy = ((q >> 1) + rc_random(key, 3)) / 2;
+        double h = (x + 0.5 + st_.pj * (0.5 - ux)) / st_.xres;
+        double v = (j + 0.5 + st_.pj * (0.5 - uy)) / st_.yres;
+        std::optional<image::ViewRay> vr = image::view_ray(view_, h, v);
+        if (!vr) continue;
+        if (st_.pd > 0) aperture(*vr, key);
+        rays.push_back({vr->org, vr->dir, vr->maxlen, id});
+        which.push_back(static_cast<std::size_t>(y) * st_.xres + x);
+      }
+    }
+    std::vector<PrimaryResult> res(rays.size());
+    r_.render(rays, res);
+    stats_.primary_rays += rays.size();
+    std::vector<int> count(grid_->size(), 1);
+    std::vector<std::array<double, 3>> sum(grid_->size());
+    for (auto [x, y] : edge) {
+      std::size_t i = static_cast<std::size_t>(y) * st_.xres + x;
+      for (int c = 0; c < 3; ++c)
+        sum[i][c] = (*grid_)[i].v[c];
+    }
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      for (int c = 0; c < 3; ++c)
+        sum[which[k]][c] += res[k].value[c];
+      ++count[which[k]];
+    }
+    for (auto [x, y] : edge) {
+      std::size_t i = static_cast<std::size_t>(y) * st_.xres + x;
+      for (int c = 0; c < 3; ++c)
+        (*grid_)[i].v[c] = static_cast<float>(sum[i][c] / count[i]);
+    }
   }
 
   Sample& at(int x, int y) { return (*grid_)[static_cast<std::size_t>(y) * st_.xres + x]; }
@@ -172,18 +235,20 @@ private:
       int j = st_.yres - 1 - row; // from the bottom, as view positions count
       std::uint32_t id = static_cast<std::uint32_t>(row) * st_.xres + x;
       rc_rng_key key = rc_make_key(id, 0, 0, st_.seed ^ 0x70696374u);
-      double h = (x + 0.5 + st_.pj * (0.5 - stratified(x, row, 0, key))) / st_.xres;
-      double v = (j + 0.5 + st_.pj * (0.5 - stratified(x, row, 1, key))) / st_.yres;
+      std::array<double, 2> u = jitter(x, row, key);
+      double h = (x + 0.5 + st_.pj * (0.5 - u[0])) / st_.xres;
+      double v = (j + 0.5 + st_.pj * (0.5 - u[1])) / st_.yres;
       std::optional<image::ViewRay> vr = image::view_ray(view_, h, v);
       Sample& s = at(x, y);
       s.done = true;
+      s.traced = true;
       if (!vr) { // outside a fisheye: black at distance 0
         s.v = {0, 0, 0};
         s.z = 0;
         continue;
       }
       if (st_.pd > 0) aperture(*vr, key);
-      rays.push_back({vr->org, vr->dir, vr->maxlen});
+      rays.push_back({vr->org, vr->dir, vr->maxlen, id}); // the pixel keys its numbers
       which.push_back(static_cast<std::size_t>(y) * st_.xres + x);
     }
     pending_.clear();
@@ -218,7 +283,7 @@ PictureStats render_picture(Renderer& renderer, const options::View& view,
     int start = carry.empty() ? top : top - 1;
     std::vector<Sample> grid(static_cast<std::size_t>(n) * st.xres);
     if (!carry.empty()) std::copy(carry.begin(), carry.end(), grid.begin());
-    worker.render(start, n, grid, step);
+    worker.render(start, n, grid, step, carry.empty() ? 0 : 1);
     PictureRows out;
     int skip = carry.empty() ? 0 : 1;
     out.first = start + skip;

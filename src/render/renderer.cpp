@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <vector>
 
 #include "radcl/device/buffer.h"
@@ -70,8 +71,8 @@ struct Renderer::Impl {
     p.spec = f4(st.ss, st.st, std::max(geom.epsilon(), 4e-7 * size), 0);
     p.seed = st.seed;
     p.lr = st.lr;
-    p.flags =
-        (st.dv ? RC_PF_DV : 0u) | (st.bv ? RC_PF_BV : 0u) | (st.irradiance_i ? RC_PF_IRRAD_I : 0u);
+    p.flags = (st.dv ? RC_PF_DV : 0u) | (st.bv ? RC_PF_BV : 0u) |
+              (st.irradiance_i ? RC_PF_IRRAD_I : 0u) | (st.low_discrepancy ? RC_PF_LOWDISC : 0u);
     p.ab = static_cast<std::uint32_t>(st.ab);
     p.nsources = static_cast<std::uint32_t>(cs.sources.sources.size());
     p.irradiance_material = cs.irradiance_material;
@@ -152,8 +153,26 @@ struct Renderer::Impl {
     }
   }
 
+  // Result slot of a primary id in the current batch: ids are input indices unless the
+  // caller gave its own (then they are looked up).
+  std::size_t batch_first = 0;
+  std::unordered_map<std::uint32_t, std::uint32_t> id_slot;
+  std::size_t slot(std::uint32_t primary) const {
+    return id_slot.empty() ? primary - batch_first : id_slot.at(primary);
+  }
+
   void render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
                     std::size_t first_index) {
+    batch_first = first_index;
+    id_slot.clear();
+    for (std::size_t i = 0; i < prim.size(); ++i)
+      if (prim[i].id != RC_NONE) {
+        for (std::size_t k = 0; k < prim.size(); ++k)
+          id_slot[prim[k].id != RC_NONE ? prim[k].id
+                                        : static_cast<std::uint32_t>(first_index + k)] =
+              static_cast<std::uint32_t>(k);
+        break;
+      }
     std::vector<rc_ray> queue(prim.size());
     std::vector<rc_hit> hits;
     std::vector<Vec3d> sums(prim.size(), Vec3d{0, 0, 0});
@@ -166,7 +185,7 @@ struct Renderer::Impl {
       r.org = f4(o[0] - centre[0], o[1] - centre[1], o[2] - centre[2], 0);
       r.dir = f4(d[0], d[1], d[2], prim[i].tmax > 0 ? prim[i].tmax : INFINITY);
       r.coef = f4(1, 1, 1, 1);
-      r.primary = static_cast<std::uint32_t>(first_index + i);
+      r.primary = prim[i].id != RC_NONE ? prim[i].id : static_cast<std::uint32_t>(first_index + i);
       r.flags = RC_RAY_PRIMARY;
     }
     if (settings.irradiance_I) {
@@ -231,7 +250,7 @@ struct Renderer::Impl {
       ctx.run(accumulate, n);
       std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
       for (std::size_t i = 0; i < n; ++i) {
-        Vec3d& s = sums[queue[i].primary - first_index];
+        Vec3d& s = sums[slot(queue[i].primary)];
         s[0] += total[i].x;
         s[1] += total[i].y;
         s[2] += total[i].z;
@@ -262,7 +281,7 @@ struct Renderer::Impl {
       hits[i] = to_device(rays[i], gh[i]);
     if (!primaries) return;
     for (std::size_t i = 0; i < n; ++i) {
-      PrimaryResult& r = res[queue[i].primary - first_index];
+      PrimaryResult& r = res[slot(queue[i].primary)];
       r.surface = hits[i].surface; // also a distant source met by a miss
       if (!gh[i]) continue;
       r.hit = true;

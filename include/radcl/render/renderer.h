@@ -35,6 +35,9 @@ struct RenderSettings {
   bool irradiance_i = false; // -i: primary hits become irradiance meters
   bool irradiance_I = false; // -I: the inputs are measurement points and normals
   std::uint32_t seed = 0;
+  // Radiance's -u-: first-hit samples follow a low-discrepancy sequence over the primary ray
+  // ids (neighbouring pixels stratify each other) instead of independent random numbers.
+  bool low_discrepancy = false;
   std::size_t wave_size = 1u << 18; // primaries per wave
 };
 
@@ -42,6 +45,9 @@ struct PrimaryRay {
   Vec3d org{};
   Vec3d dir{};     // need not be unit
   double tmax = 0; // 0: unlimited
+  // Identity keying this ray's random numbers (rpict: the pixel number); RC_NONE = its index
+  // in the whole input. Ids must be unique within one render() call.
+  std::uint32_t id = RC_NONE;
 };
 
 struct PrimaryResult {
