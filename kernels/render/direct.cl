@@ -105,11 +105,15 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
     global const rc_source* src = S->sources + s;
     /* Radiance subdivides less for rays that matter less: -ds scales with 1/weight. */
     uint cells = rc_source_cells(src, p, P->direct.x / fmax(r->coef.w, 1e-6f));
+    rc_src_parts parts;
+    rc_source_parts(src, p, cells, &parts);
     for (uint k = 0; k < cells; ++k, dim += 2) {
+      rc_src_cell g = rc_src_parts_next(&parts);
       float2 xi = (float2)(rc_sample(P, key, dim), rc_sample(P, key, dim + 1));
       float3 l;
       float dist, omega;
-      if (!rc_source_sample(src, S->verts, p, hn, k, cells, P->direct.y, xi, &l, &dist, &omega))
+      if (!rc_source_sample_part(src, S->verts, p, hn, g, cells, P->direct.y, xi, &l, &dist,
+                                 &omega))
         continue;
       float3 ls = rc_source_radiance(src, l, dist);
       if (src->flags & RC_SRCF_VIRTUAL)

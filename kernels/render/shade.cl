@@ -26,7 +26,9 @@ static inline uint rc_crtype(uint flags) {
 static inline float3 rc_ray_medium(const rc_ray* r) {
   return (float3)(r->cext_r, r->cext_g, r->cext_b);
 }
-static inline float3 rc_shadow_medium(const rc_shadow* s) { return s->cext.xyz; }
+static inline float3 rc_shadow_medium(const rc_shadow* s) {
+  return s->cext.xyz;
+}
 /* Transmittance over a path of length t (t < 0: to infinity), as Radiance's
  * rayparticipate() without scattering. */
 static inline float rc_ext1(float c, float t) {

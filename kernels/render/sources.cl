@@ -120,6 +120,50 @@ static inline rc_src_cell rc_src_find_cell(float3 p, float3 c, float3 u, float3 
   return root;
 }
 
+/* All parts of a partition in the order rc_src_find_cell() numbers them, building the split
+ * tree once: a hit that samples every part of a source costs one tree, not one per part. */
+typedef struct rc_src_parts {
+  float key[RC_SRC_MAXSPLIT];
+  rc_src_cell cell[RC_SRC_MAXSPLIT];
+  float limit, uu, vv;
+  uint stack[8];
+  int sp;
+  uint cells;
+} rc_src_parts;
+
+static inline void rc_src_parts_init(rc_src_parts* it, float3 p, float3 c, float3 u, float3 v,
+                                     uint cells) {
+  it->cells = cells;
+  it->sp = 0;
+  if (cells <= 1u) return;
+  float tmp[RC_SRC_MAXSPLIT];
+  rc_src_tree(p, c, u, v, it->key, it->cell);
+  for (int i = 0; i < RC_SRC_MAXSPLIT; ++i)
+    tmp[i] = it->key[i];
+  int nsplit = min((int)cells - 1, RC_SRC_MAXSPLIT);
+  it->limit = rc_src_select(tmp, RC_SRC_MAXSPLIT, nsplit - 1);
+  it->uu = dot(u, u);
+  it->vv = dot(v, v);
+  it->stack[it->sp++] = 0u;
+}
+
+static inline rc_src_cell rc_src_parts_next(rc_src_parts* it) {
+  rc_src_cell root = (rc_src_cell)(0.0f, 0.0f, 1.0f, 1.0f);
+  if (it->cells <= 1u) return root;
+  while (it->sp > 0) {
+    uint i = it->stack[--it->sp];
+    if (i < RC_SRC_MAXSPLIT && it->key[i] <= it->limit) {
+      it->stack[it->sp++] = 2u * i + 2u;
+      it->stack[it->sp++] = 2u * i + 1u;
+      continue;
+    }
+    return i < RC_SRC_MAXSPLIT
+               ? it->cell[i]
+               : rc_src_child(it->cell[(i - 1u) >> 1], (i - 1u) & 1u, it->uu, it->vv);
+  }
+  return root;
+}
+
 /* Number of parts for a partition threshold (2/ds)^2. */
 static inline uint rc_src_count(float3 p, float3 c, float3 u, float3 v, float ds) {
   if (ds <= RC_SRC_FTINY) return 1u;
@@ -263,13 +307,11 @@ static inline float3 rc_src_polygon_cell(global const rc_source* s, global const
 }
 
 static inline int rc_src_sample_flat(global const rc_source* s, global const float4* verts,
-                                     float3 p, uint k, uint cells, float dj, float2 xi, float3* pt,
+                                     float3 p, rc_src_cell g, float dj, float2 xi, float3* pt,
                                      float* area) {
   float3 n = s->axis.xyz;
   if (dot(p - s->pos.xyz, n) <= 0.0f) return 0; /* behind */
-  float f = rc_src_walk_scale(s);
   float3 c = rc_src_rect_centre(s);
-  rc_src_cell g = rc_src_find_cell(p, c, f * s->su.xyz, f * s->sv.xyz, k, cells);
   float2 q = g.xy + dj * (2.0f * xi - 1.0f) * g.zw;
   if (s->nverts == 0u) {
     /* Ring: the square mapped onto the disc or annulus (area-proportional, so a jittered point
@@ -305,10 +347,10 @@ static inline int rc_src_sample_flat(global const rc_source* s, global const flo
  * its distance and the solid angle it stands for; 0 if unusable. A spotlight's focus
  * adjustment of the solid angle (Radiance's d^2/(d+focus)^2) is applied here; its cone test is
  * in rc_source_radiance(). */
-static inline int rc_source_sample(global const rc_source* s, global const float4* verts, float3 p,
-                                   float3 n, uint k, uint cells, float dj, float2 xi, float3* dir,
-                                   float* dist, float* omega) {
-  if (cells == 0u || k >= cells) return 0;
+static inline int rc_source_sample_part(global const rc_source* s, global const float4* verts,
+                                        float3 p, float3 n, rc_src_cell g, uint cells, float dj,
+                                        float2 xi, float3* dir, float* dist, float* omega) {
+  if (cells == 0u) return 0;
   float3 l;
   float d, om;
   if (s->kind == RC_SRC_DISTANT) {
@@ -339,7 +381,7 @@ static inline int rc_source_sample(global const rc_source* s, global const float
   } else if (s->kind == RC_SRC_FLAT) {
     float3 pt;
     float area;
-    if (!rc_src_sample_flat(s, verts, p, k, cells, dj, xi, &pt, &area)) return 0;
+    if (!rc_src_sample_flat(s, verts, p, g, dj, xi, &pt, &area)) return 0;
     float3 q = pt - p;
     d = length(q);
     if (d <= 0.0f) return 0;
@@ -352,7 +394,6 @@ static inline int rc_source_sample(global const rc_source* s, global const float
     float3 c = s->pos.xyz, ax = s->axis.xyz, v = p - c;
     float len = s->axis.w, r = s->pos.w, along = dot(v, ax);
     if (dot(v, v) - along * along <= r * r) return 0; /* inside */
-    rc_src_cell g = rc_src_find_cell(p, c, 0.5f * len * ax, (float3)(0.0f), k, cells);
     float su = g.x + dj * (2.0f * xi.x - 1.0f) * g.z;
     float3 across = normalize(cross(ax, v));
     float3 q = c + (0.5f * len * su) * ax + (dj * (2.0f * xi.y - 1.0f) * r) * across - p;
@@ -373,6 +414,45 @@ static inline int rc_source_sample(global const rc_source* s, global const float
   *dist = d;
   *omega = om;
   return 1;
+}
+
+/* The walk vectors a source's partition uses: half extents u, v from centre c (flat sources:
+ * their sampling rectangle; cylinders: half the axis). 0 for sources that are never split. */
+static inline int rc_source_walk(global const rc_source* s, float3* c, float3* u, float3* v) {
+  if (s->kind == RC_SRC_FLAT) {
+    float f = rc_src_walk_scale(s);
+    *c = rc_src_rect_centre(s);
+    *u = f * s->su.xyz;
+    *v = f * s->sv.xyz;
+    return 1;
+  }
+  if (s->kind == RC_SRC_CYLINDER) {
+    *c = s->pos.xyz;
+    *u = 0.5f * s->axis.w * s->axis.xyz;
+    *v = (float3)(0.0f);
+    return 1;
+  }
+  return 0;
+}
+
+/* Prepares the parts of source s seen from p, to be taken in turn with rc_src_parts_next(). */
+static inline void rc_source_parts(global const rc_source* s, float3 p, uint cells,
+                                   rc_src_parts* it) {
+  float3 c, u, v;
+  if (!rc_source_walk(s, &c, &u, &v)) cells = 1u;
+  rc_src_parts_init(it, p, c, u, v, cells);
+}
+
+/* The k-th of `cells` samples (rebuilds the partition: for one sample; loops over all parts
+ * use rc_source_parts()). */
+static inline int rc_source_sample(global const rc_source* s, global const float4* verts, float3 p,
+                                   float3 n, uint k, uint cells, float dj, float2 xi, float3* dir,
+                                   float* dist, float* omega) {
+  if (cells == 0u || k >= cells) return 0;
+  float3 c, u, v;
+  rc_src_cell g = (rc_src_cell)(0.0f, 0.0f, 1.0f, 1.0f);
+  if (rc_source_walk(s, &c, &u, &v)) g = rc_src_find_cell(p, c, u, v, k, cells);
+  return rc_source_sample_part(s, verts, p, n, g, cells, dj, xi, dir, dist, omega);
 }
 
 /* Radiance sent from source s back along -dir_from_p by a sample at distance dist: only the

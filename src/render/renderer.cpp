@@ -54,6 +54,37 @@ struct Renderer::Impl {
   Vec3d centre;
   RenderStats stats;
 
+  // Per-wave buffers, kept between waves and grown when a wave needs more: allocating them
+  // afresh every wave spends more time clearing pages than shading.
+  enum Slot {
+    kRays,
+    kHits,
+    kNShadow,
+    kNSpawn,
+    kShadowOff,
+    kSpawnOff,
+    kShadows,
+    kSpawned,
+    kImm,
+    kBlocked,
+    kTotal,
+    kStepRays,
+    kStepHits,
+    kStepState,
+    kSlots
+  };
+  std::vector<device::Buffer> pool = std::vector<device::Buffer>(kSlots);
+  device::Buffer& scratch(Slot slot, std::size_t bytes) {
+    bytes = std::max<std::size_t>(bytes, 16);
+    if (pool[slot].size() < bytes) pool[slot] = device::Buffer(ctx, bytes + bytes / 2);
+    return pool[slot];
+  }
+  template <class T> device::Buffer& scratch(Slot slot, const std::vector<T>& v) {
+    device::Buffer& b = scratch(slot, v.size() * sizeof(T));
+    if (!v.empty()) b.write(v.data(), v.size() * sizeof(T));
+    return b;
+  }
+
   Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
       : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
         program(c, cs.features.program({"render/shade.cl"})), count(program.kernel("rc_count")),
@@ -213,9 +244,10 @@ struct Renderer::Impl {
       if (!(first_wave && settings.irradiance_I)) trace(queue, hits, res, first_wave, first_index);
       first_wave = false;
 
-      device::Buffer brays = device::Buffer::from(ctx, queue);
-      device::Buffer bhits = device::Buffer::from(ctx, hits);
-      device::Buffer bnshadow(ctx, n * 4), bnspawn(ctx, n * 4);
+      device::Buffer& brays = scratch(kRays, queue);
+      device::Buffer& bhits = scratch(kHits, hits);
+      device::Buffer& bnshadow = scratch(kNShadow, n * 4);
+      device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
       std::uint32_t un = static_cast<std::uint32_t>(n);
       count.arg(0, brays).arg(1, bhits).arg(2, un);
       set_scene_args(count, 3);
@@ -225,11 +257,11 @@ struct Renderer::Impl {
       std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
       std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
 
-      device::Buffer bsoff = device::Buffer::from(ctx, shadow_off);
-      device::Buffer bpoff = device::Buffer::from(ctx, spawn_off);
-      device::Buffer bshadows(ctx, std::max<std::size_t>(nshadow, 1) * sizeof(rc_shadow));
-      device::Buffer bspawned(ctx, std::max<std::size_t>(nspawn, 1) * sizeof(rc_ray));
-      device::Buffer bimm(ctx, n * sizeof(rc_float4));
+      device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
+      device::Buffer& bpoff = scratch(kSpawnOff, spawn_off);
+      device::Buffer& bshadows = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
+      device::Buffer& bspawned = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
+      device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
       shade.arg(0, brays).arg(1, bhits).arg(2, un);
       set_scene_args(shade, 3);
       shade.arg(10, bsoff).arg(11, bpoff).arg(12, bshadows).arg(13, bspawned).arg(14, bimm);
@@ -238,8 +270,8 @@ struct Renderer::Impl {
       std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);
       std::vector<std::uint8_t> blocked = trace_shadows(shadows);
       if (nshadow > 0) bshadows.write(shadows.data(), nshadow * sizeof(rc_shadow));
-      device::Buffer bblocked = upload(ctx, blocked);
-      device::Buffer btotal(ctx, n * sizeof(rc_float4));
+      device::Buffer& bblocked = scratch(kBlocked, blocked);
+      device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
       accumulate.arg(0, bimm)
           .arg(1, bsoff)
           .arg(2, bshadows)
@@ -297,7 +329,24 @@ struct Renderer::Impl {
   // contribution reduced (then it is traced again from there). Each ray keeps its slot, so the
   // result does not depend on the order of work. Survivors' final contributions are written
   // back into `shadows`; the return value marks the blocked ones.
+  // In chunks, so the host's per-ray scratch (Embree answers above all) stays in memory that is
+  // reused rather than freshly mapped and cleared.
   std::vector<std::uint8_t> trace_shadows(std::vector<rc_shadow>& shadows) {
+    constexpr std::size_t kChunk = 1u << 18;
+    if (shadows.size() <= kChunk) return trace_shadow_chunk(shadows);
+    std::vector<std::uint8_t> blocked(shadows.size());
+    std::vector<rc_shadow> part;
+    for (std::size_t a = 0; a < shadows.size(); a += kChunk) {
+      std::size_t b = std::min(shadows.size(), a + kChunk);
+      part.assign(shadows.begin() + static_cast<long>(a), shadows.begin() + static_cast<long>(b));
+      std::vector<std::uint8_t> bl = trace_shadow_chunk(part);
+      std::copy(part.begin(), part.end(), shadows.begin() + static_cast<long>(a));
+      std::copy(bl.begin(), bl.end(), blocked.begin() + static_cast<long>(a));
+    }
+    return blocked;
+  }
+
+  std::vector<std::uint8_t> trace_shadow_chunk(std::vector<rc_shadow>& shadows) {
     std::size_t n = shadows.size();
     std::vector<std::uint8_t> blocked(n, 1);
     std::vector<std::uint32_t> slot;
@@ -331,9 +380,9 @@ struct Renderer::Impl {
       for (std::size_t i = 0; i < m; ++i)
         hits[i] = to_device(rays[i], gh[i]);
 
-      device::Buffer bcur = device::Buffer::from(ctx, cur);
-      device::Buffer bhits = device::Buffer::from(ctx, hits);
-      device::Buffer bstate = device::Buffer::from(ctx, state);
+      device::Buffer& bcur = scratch(kStepRays, cur);
+      device::Buffer& bhits = scratch(kStepHits, hits);
+      device::Buffer& bstate = scratch(kStepState, state);
       std::uint32_t um = static_cast<std::uint32_t>(m);
       shadow_step.arg(0, bcur).arg(1, bhits).arg(2, bstate).arg(3, um);
       set_scene_args(shadow_step, 4);
