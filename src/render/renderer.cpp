@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <unordered_map>
 #include <vector>
 
@@ -244,6 +245,8 @@ struct Renderer::Impl {
       if (!(first_wave && settings.irradiance_I)) trace(queue, hits, res, first_wave, first_index);
       first_wave = false;
 
+      // Count every ray's shadow and child rays, then shade in slices whose outputs fit the
+      // device's largest allocation (a slice keeps queue order, so sums stay in order).
       device::Buffer& brays = scratch(kRays, queue);
       device::Buffer& bhits = scratch(kHits, hits);
       device::Buffer& bnshadow = scratch(kNShadow, n * 4);
@@ -253,44 +256,80 @@ struct Renderer::Impl {
       set_scene_args(count, 3);
       count.arg(10, bnshadow).arg(11, bnspawn);
       ctx.run(count, n);
-      std::vector<std::uint32_t> shadow_off = bnshadow.to_vector<std::uint32_t>(n);
-      std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
-      std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
-
-      device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
-      device::Buffer& bpoff = scratch(kSpawnOff, spawn_off);
-      device::Buffer& bshadows = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
-      device::Buffer& bspawned = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
-      device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
-      shade.arg(0, brays).arg(1, bhits).arg(2, un);
-      set_scene_args(shade, 3);
-      shade.arg(10, bsoff).arg(11, bpoff).arg(12, bshadows).arg(13, bspawned).arg(14, bimm);
-      ctx.run(shade, n);
-
-      std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);
-      std::vector<std::uint8_t> blocked = trace_shadows(shadows);
-      if (nshadow > 0) bshadows.write(shadows.data(), nshadow * sizeof(rc_shadow));
-      device::Buffer& bblocked = scratch(kBlocked, blocked);
-      device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
-      accumulate.arg(0, bimm)
-          .arg(1, bsoff)
-          .arg(2, bshadows)
-          .arg(3, bblocked)
-          .arg(4, un)
-          .arg(5, nshadow)
-          .arg(6, btotal);
-      ctx.run(accumulate, n);
-      std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
-      for (std::size_t i = 0; i < n; ++i) {
-        Vec3d& s = sums[slot(queue[i].primary)];
-        s[0] += total[i].x;
-        s[1] += total[i].y;
-        s[2] += total[i].z;
+      std::vector<std::uint32_t> nsh = bnshadow.to_vector<std::uint32_t>(n);
+      std::vector<std::uint32_t> nsp = bnspawn.to_vector<std::uint32_t>(n);
+      std::size_t limit = std::min<std::size_t>(ctx.info().max_alloc / 2, std::size_t{1} << 29);
+      if (const char* e = std::getenv("RADCL_WAVE_BYTES")) limit = std::strtoull(e, nullptr, 10);
+      std::vector<rc_ray> next;
+      for (std::size_t a = 0; a < n;) {
+        std::size_t b = a, shadows = 0, spawned = 0;
+        while (b < n && (b == a || ((shadows + nsh[b]) * sizeof(rc_shadow) <= limit &&
+                                    (spawned + nsp[b]) * sizeof(rc_ray) <= limit))) {
+          shadows += nsh[b];
+          spawned += nsp[b];
+          ++b;
+        }
+        shade_slice(queue, hits, a, b, nsh, nsp, sums, next);
+        a = b;
       }
-      queue = bspawned.to_vector<rc_ray>(nspawn);
+      queue = std::move(next);
     }
     for (std::size_t i = 0; i < prim.size(); ++i)
       res[i].value = sums[i];
+  }
+
+  // Shades rays [a, b) of the wave: writes their shadow requests and children, tests the
+  // shadows, adds each ray's total into its primary's sum, appends the children to `next`.
+  void shade_slice(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits, std::size_t a,
+                   std::size_t b, const std::vector<std::uint32_t>& nsh,
+                   const std::vector<std::uint32_t>& nsp, std::vector<Vec3d>& sums,
+                   std::vector<rc_ray>& next) {
+    std::size_t n = b - a;
+    std::vector<rc_ray> rays(queue.begin() + static_cast<long>(a),
+                             queue.begin() + static_cast<long>(b));
+    std::vector<rc_hit> hit(hits.begin() + static_cast<long>(a),
+                            hits.begin() + static_cast<long>(b));
+    std::vector<std::uint32_t> shadow_off(nsh.begin() + static_cast<long>(a),
+                                          nsh.begin() + static_cast<long>(b));
+    std::vector<std::uint32_t> spawn_off(nsp.begin() + static_cast<long>(a),
+                                         nsp.begin() + static_cast<long>(b));
+    std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
+    std::uint32_t un = static_cast<std::uint32_t>(n);
+
+    device::Buffer& brays = scratch(kRays, rays);
+    device::Buffer& bhits = scratch(kHits, hit);
+    device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
+    device::Buffer& bpoff = scratch(kSpawnOff, spawn_off);
+    device::Buffer& bshadows = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
+    device::Buffer& bspawned = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
+    device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
+    shade.arg(0, brays).arg(1, bhits).arg(2, un);
+    set_scene_args(shade, 3);
+    shade.arg(10, bsoff).arg(11, bpoff).arg(12, bshadows).arg(13, bspawned).arg(14, bimm);
+    ctx.run(shade, n);
+
+    std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);
+    std::vector<std::uint8_t> blocked = trace_shadows(shadows);
+    if (nshadow > 0) bshadows.write(shadows.data(), nshadow * sizeof(rc_shadow));
+    device::Buffer& bblocked = scratch(kBlocked, blocked);
+    device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
+    accumulate.arg(0, bimm)
+        .arg(1, bsoff)
+        .arg(2, bshadows)
+        .arg(3, bblocked)
+        .arg(4, un)
+        .arg(5, nshadow)
+        .arg(6, btotal);
+    ctx.run(accumulate, n);
+    std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      Vec3d& s = sums[slot(rays[i].primary)];
+      s[0] += total[i].x;
+      s[1] += total[i].y;
+      s[2] += total[i].z;
+    }
+    std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
+    next.insert(next.end(), children.begin(), children.end());
   }
 
   // Embree over the wave; depth-0 hits also fill the primaries' geometric results.

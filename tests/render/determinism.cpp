@@ -56,6 +56,16 @@ TEST(Determinism, SameAcrossWaveSizesAndThreads) {
   EXPECT_TRUE(identical(base, run(1 << 18, 1, 42))) << "one host thread";
 }
 
+// Waves whose shadow and child rays exceed the device's allocation limit are shaded in slices;
+// a tiny limit (RADCL_WAVE_BYTES) slices every wave and must not change a bit.
+TEST(Determinism, SameWhenWavesAreSliced) {
+  auto base = run(1 << 18, 2, 42);
+  setenv("RADCL_WAVE_BYTES", "4096", 1);
+  auto sliced = run(1 << 18, 2, 42);
+  unsetenv("RADCL_WAVE_BYTES");
+  EXPECT_TRUE(identical(base, sliced));
+}
+
 TEST(Determinism, SeedChangesTheNoise) {
   auto a = run(1 << 18, 2, 1), b = run(1 << 18, 2, 2);
   EXPECT_FALSE(identical(a, b));
