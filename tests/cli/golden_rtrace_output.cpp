@@ -96,6 +96,28 @@ TEST(GoldenRtraceOutput, DirectValuesEndToEnd) {
   EXPECT_LE(sum / ref.size(), 0.01);
 }
 
+// -ab 1 -aa 0 -ad 2048 -lw 1e-5: indirect light by hemisphere sampling, against Radiance's run
+// with the same settings, over the rays whose first hit is a diffuse (plastic) surface.
+TEST(GoldenRtraceOutput, AmbientWithoutCache) {
+  auto ours = rows(rtrace("-h -ab 1 -aa 0 -ad 2048 -lw 1e-5 -ov", "materials_rays.txt"));
+  auto ref = radcl::test::read_rgb(radcl::test::data("results/materials_plain_rays_aa0.txt"));
+  auto names =
+      rows(slurp(radcl::test::data("results/materials_plain_rays_oodvVwWlLcpnNsmMrxRX.txt")));
+  ASSERT_EQ(ours.size(), ref.size());
+  double sum = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k) {
+    const std::string& m = names[k][34]; // M: the material reached
+    if (m != "grey_floor" && m != "red_plastic" && m != "blue_plastic") continue;
+    double a = lum(std::stod(ours[k][0]), std::stod(ours[k][1]), std::stod(ours[k][2]));
+    double b = lum(ref[k][0], ref[k][1], ref[k][2]);
+    sum += std::fabs(a - b) / b;
+    ++n;
+  }
+  ASSERT_GT(n, 80);
+  EXPECT_LE(sum / n, 0.03) << "mean relative error over " << n << " diffuse hits";
+}
+
 TEST(GoldenRtraceOutput, BinaryFormats) {
   // Float and double in, float and double out: 3 host-order numbers per ray, nothing else.
   std::string ff = rtrace("-h -u- " + kDirect + " -ff -ov", "materials_rays.f32");
