@@ -46,6 +46,12 @@ render::RenderSettings settings_from(const options::RenderOptions& r) {
   s.av = r.ambient_value;
   s.ab = r.ambient_bounces;
   s.ad = r.ambient_divisions;
+  if (r.ambient_list.kind != options::ModifierList::Kind::None) {
+    s.ambient_list = r.ambient_list.kind == options::ModifierList::Kind::Include
+                         ? render::RenderSettings::AmbientList::Include
+                         : render::RenderSettings::AmbientList::Exclude;
+    s.ambient_names = r.ambient_list.names;
+  }
   s.lr = r.max_depth;
   s.lw = r.min_weight;
   s.irradiance_i = r.irradiance;
@@ -152,8 +158,10 @@ int rpict_main(int argc, char** argv) {
   if (opt.persist != options::RtraceOptions::Persist::None)
     throw FatalError("persistent mode (-P/-PP) is not supported yet");
   if (opt.pixel_motion > 0) warning("-pm needs a view sequence (-S): no motion blur");
-  if (!opt.render.ambient_list.names.empty())
-    throw FatalError("ambient include/exclude lists (-ae/-ai/-aE/-aI) are not supported yet");
+  // Radiance averages -av with the cache's values only (ambient.c's avsum): with -aa 0 -aw
+  // changes nothing there either.
+  if (opt.render.ambient_value_weight > 0 && opt.render.ambient_accuracy > 0)
+    warning("-aw needs the irradiance cache's values: the ambient value is used as given");
   if (opt.render.ambient_accuracy > 0 && opt.render.ambient_bounces > 0)
     warning("irradiance cache not available yet: ambient computed without it (as -aa 0)");
 

@@ -46,6 +46,12 @@ render::RenderSettings settings_from(const options::RtraceOptions& o) {
   s.av = r.ambient_value;
   s.ab = r.ambient_bounces;
   s.ad = r.ambient_divisions;
+  if (r.ambient_list.kind != options::ModifierList::Kind::None) {
+    s.ambient_list = r.ambient_list.kind == options::ModifierList::Kind::Include
+                         ? render::RenderSettings::AmbientList::Include
+                         : render::RenderSettings::AmbientList::Exclude;
+    s.ambient_names = r.ambient_list.names;
+  }
   s.lr = r.max_depth;
   s.lw = r.min_weight;
   s.irradiance_i = r.irradiance;
@@ -259,12 +265,11 @@ int rtrace_main(int argc, char** argv) {
   if (spec.trace_mode()) throw FatalError("trace output (-ot/-oT) is not supported yet");
   if (cmd.opt.persist != options::RtraceOptions::Persist::None)
     throw FatalError("persistent mode (-P/-PP) is not supported yet");
-  if (cmd.opt.render.ambient_list.kind != options::ModifierList::Kind::None &&
-      !cmd.opt.render.ambient_list.names.empty())
-    throw FatalError("ambient include/exclude lists (-ae/-ai/-aE/-aI) are not supported yet");
   if (!cmd.opt.render.photon_maps.empty()) throw FatalError("photon maps (-ap) are not supported");
-  if (cmd.opt.render.ambient_value_weight > 0)
-    warning("-aw is not supported yet: the ambient value is used as given");
+  // Radiance averages -av with the cache's values only (ambient.c's avsum): with -aa 0 -aw
+  // changes nothing there either.
+  if (cmd.opt.render.ambient_value_weight > 0 && cmd.opt.render.ambient_accuracy > 0)
+    warning("-aw needs the irradiance cache's values: the ambient value is used as given");
   if (cmd.opt.render.ambient_accuracy > 0 && cmd.opt.render.ambient_bounces > 0)
     warning("irradiance cache not available yet: ambient computed without it (as -aa 0)");
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "radcl/scene/material_chain.h"
 #include "radcl/util/error.h"
@@ -126,6 +127,15 @@ private:
     return id;
   }
 
+  static rc_surface new_surface(std::uint32_t type, std::uint32_t object) {
+    rc_surface s{};
+    s.material = RC_NONE;
+    s.type = type;
+    s.source = RC_NONE;
+    s.object = object;
+    return s;
+  }
+
   void push_surface(rc_surface s, std::string name, std::string mod, std::string mat) {
     out_.surfaces.push_back(s);
     out_.surface_names.push_back(std::move(name));
@@ -136,8 +146,7 @@ private:
   void add_surface(const geometry::Placement& pl, std::int32_t obj) {
     const scene::SceneDescription& sd = *pl.scene;
     const scene::Object& o = sd.objects[obj];
-    rc_surface s{RC_NONE, static_cast<std::uint32_t>(o.type), RC_NONE,
-                 static_cast<std::uint32_t>(obj)};
+    rc_surface s = new_surface(static_cast<std::uint32_t>(o.type), static_cast<std::uint32_t>(obj));
     if (!scene::is_surface(o.type)) {
       push_surface(s, o.name, "", "");
       return;
@@ -164,7 +173,7 @@ private:
     const scene::Object& prim = ls_.main.objects[pl.instance_object];
     out_.features.add(RC_OBJ_MESH);
     for (std::int32_t i = -1; i < static_cast<std::int32_t>(mesh.materials.size()); ++i) {
-      rc_surface s{RC_NONE, RC_OBJ_MESH, RC_NONE, static_cast<std::uint32_t>(pl.instance_object)};
+      rc_surface s = new_surface(RC_OBJ_MESH, static_cast<std::uint32_t>(pl.instance_object));
       std::string mod = "void", mat = "void";
       if (pl.shade_object >= 0) { // the mesh primitive's own modifier overrides its faces'
         std::int32_t m = scene::first_material(*pl.shade_scene, pl.shade_object);
@@ -210,6 +219,19 @@ std::uint32_t distant_surface(const CompiledScene& cs, const geometry::SceneGeom
     found = surf;
   }
   return found;
+}
+
+void mark_ambient_list(CompiledScene& cs, bool include, const std::vector<std::string>& names) {
+  std::set<std::string> set(names.begin(), names.end());
+  for (std::size_t i = 0; i < cs.surfaces.size(); ++i) {
+    const std::string& mod = cs.modifier_names[i];
+    // "void" names no object, so Radiance's set never holds it.
+    bool in = !mod.empty() && mod != "void" && set.count(mod) > 0;
+    if (in != include)
+      cs.surfaces[i].flags |= RC_SURFF_NO_AMBIENT;
+    else
+      cs.surfaces[i].flags &= ~RC_SURFF_NO_AMBIENT;
+  }
 }
 
 CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom,

@@ -93,6 +93,11 @@ struct Renderer::Impl {
         shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
         materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
         centre(geom.centre()) {
+    if (st.ambient_list != RenderSettings::AmbientList::None) {
+      mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
+                        st.ambient_names);
+      surfaces = upload(c, cs.surfaces);
+    }
     rc_params p{};
     p.av = f4(st.av[0], st.av[1], st.av[2], st.lw);
     p.direct = f4(st.ds, st.dj, st.dt, st.dc);

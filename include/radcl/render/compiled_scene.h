@@ -43,6 +43,11 @@ struct CompiledScene {
 std::uint32_t distant_surface(const CompiledScene& cs, const geometry::SceneGeometry& geom,
                               const std::array<double, 3>& dir);
 
+// -ae/-ai: flags every surface whose modifier (the object it names, as Radiance's r->ro->omod,
+// before aliases and patterns are followed) is in `names` with an exclude list, or not in it
+// with an include list, so its hits take -av instead of sampling the ambient.
+void mark_ambient_list(CompiledScene& cs, bool include, const std::vector<std::string>& names);
+
 // Throws FatalError naming the material for types the renderer does not handle yet. With
 // `shading` false (ray casting only) every material is accepted, nothing is checked for
 // shading and no light sources are compiled.

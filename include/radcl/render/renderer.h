@@ -7,6 +7,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "radcl/geometry/scene_geometry.h"
 #include "radcl/render/compiled_scene.h"
@@ -30,6 +31,11 @@ struct RenderSettings {
   Vec3d av{0, 0, 0};
   int ab = 0;
   int ad = 1024; // -aa 0 hemisphere divisions
+  // -ae/-ai/-aE/-aI: hits on surfaces whose modifier is excluded (or, with an include list, not
+  // included) take -av instead of sampling.
+  enum class AmbientList { None, Include, Exclude };
+  AmbientList ambient_list = AmbientList::None;
+  std::vector<std::string> ambient_names;
   int lr = -10;
   double lw = 2e-3;
   bool irradiance_i = false; // -i: primary hits become irradiance meters
