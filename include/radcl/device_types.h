@@ -62,6 +62,9 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
 #define RC_RAY_SPECULAR 3u    /* sampled rough specular */
 #define RC_RAY_AMBIENT 4u     /* indirect diffuse sample */
 #define RC_RAY_KIND_MASK 7u
+/* Lineage bit: the ray descends from the primary hit's pure specular reflection, whose
+ * contribution rtrace reports as "mirrored" (-o r, x, R, l). */
+#define RC_RAY_MIRRORED 32u
 
 /* One ray of a wave. org.w = tmin, dir.w = tmax; coef.xyz is the accumulated coefficient
  * (product of material coefficients down the tree), coef.w the scalar ray weight that -lw cuts. */

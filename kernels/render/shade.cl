@@ -145,6 +145,8 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     r.primary = parent->primary;
     r.depth = depth;
     r.flags = kind | rc_crtype(parent->flags);
+    if (kind == RC_RAY_REFLECTED && (parent->flags & RC_RAY_KIND_MASK) == RC_RAY_PRIMARY)
+      r.flags |= RC_RAY_MIRRORED;
     r.sample = rc_child_sample(parent->sample, o->nspawn);
     r.ambient_depth = ambient_depth;
     r.cext_r = o->cext.x;

@@ -230,6 +230,23 @@ private:
       o.modifier = cs.modifier_names[r.surface];
       o.material = cs.material_names[r.surface];
     }
+    // Primary rays carry coefficient 1: their contribution is their value. The mirrored part
+    // and its length come from the first hit's pure specular reflection, as Radiance's.
+    o.contribution = r.value;
+    o.mirrored = r.mirrored;
+    if (r.hit && r.mirror_t >= 0) {
+      // A flat mirror's image lies behind it (the reflected ray's length adds); a curved one's
+      // is taken at the surface, as Radiance's m_normal/m_glass do.
+      rc_object_type type = r.surface < cs.surfaces.size()
+                                ? static_cast<rc_object_type>(cs.surfaces[r.surface].type)
+                                : RC_OBJ_SPHERE;
+      bool flat = type == RC_OBJ_POLYGON || type == RC_OBJ_RING;
+      o.mirrored_length = r.t + (flat ? r.mirror_t : 0.0);
+      auto bright = [](const options::Vec3& c) {
+        return 0.265074126 * c[0] + 0.670114631 * c[1] + 0.064811243 * c[2];
+      };
+      if (bright(o.mirrored) > 0.5 * bright(o.value)) o.effective_length = o.mirrored_length;
+    }
     o.derive_unmirrored();
     out_.clear();
     options::append_record(out_, spec_.per_ray, o, opt_.out_format);

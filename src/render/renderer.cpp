@@ -194,6 +194,8 @@ struct Renderer::Impl {
   // caller gave its own (then they are looked up).
   std::size_t batch_first = 0;
   std::unordered_map<std::uint32_t, std::uint32_t> id_slot;
+  std::vector<Vec3d>* mirrored = nullptr; // the batch's mirrored sums, per primary
+  std::span<PrimaryResult> results;       // the batch's results
   std::size_t slot(std::uint32_t primary) const {
     return id_slot.empty() ? primary - batch_first : id_slot.at(primary);
   }
@@ -213,6 +215,9 @@ struct Renderer::Impl {
     std::vector<rc_ray> queue(prim.size());
     std::vector<rc_hit> hits;
     std::vector<Vec3d> sums(prim.size(), Vec3d{0, 0, 0});
+    std::vector<Vec3d> mirror_sums(prim.size(), Vec3d{0, 0, 0});
+    mirrored = &mirror_sums;
+    results = res;
     for (std::size_t i = 0; i < prim.size(); ++i) {
       Vec3d d = unit(prim[i].dir);
       Vec3d o = prim[i].org;
@@ -279,8 +284,10 @@ struct Renderer::Impl {
       }
       queue = std::move(next);
     }
-    for (std::size_t i = 0; i < prim.size(); ++i)
+    for (std::size_t i = 0; i < prim.size(); ++i) {
       res[i].value = sums[i];
+      res[i].mirrored = mirror_sums[i];
+    }
   }
 
   // Shades rays [a, b) of the wave: writes their shadow requests and children, tests the
@@ -332,6 +339,12 @@ struct Renderer::Impl {
       s[0] += total[i].x;
       s[1] += total[i].y;
       s[2] += total[i].z;
+      if (rays[i].flags & RC_RAY_MIRRORED) {
+        Vec3d& m = (*mirrored)[slot(rays[i].primary)];
+        m[0] += total[i].x;
+        m[1] += total[i].y;
+        m[2] += total[i].z;
+      }
     }
     std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
     next.insert(next.end(), children.begin(), children.end());
@@ -355,6 +368,11 @@ struct Renderer::Impl {
     hits.resize(n);
     for (std::size_t i = 0; i < n; ++i)
       hits[i] = to_device(rays[i], gh[i]);
+    // The first hit's mirror reflection: how far it went, for rtrace's R and l.
+    for (std::size_t i = 0; i < n; ++i)
+      if ((queue[i].flags & RC_RAY_MIRRORED) &&
+          (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED && queue[i].depth == 1)
+        results[slot(queue[i].primary)].mirror_t = gh[i] ? gh[i]->t : 1e10;
     if (!primaries) return;
     for (std::size_t i = 0; i < n; ++i) {
       PrimaryResult& r = res[slot(queue[i].primary)];

@@ -63,6 +63,8 @@ struct PrimaryResult {
   Vec3d point{};                   // first intersection (the origin if nothing was hit)
   Vec3d normal{};                  // unperturbed normal at it, 0 if nothing hit
   std::uint32_t surface = RC_NONE; // compiled surface of the first hit (names), or RC_NONE
+  Vec3d mirrored{};     // part of `value` that came through the first hit's mirror reflection
+  double mirror_t = -1; // distance the mirror-reflected ray travelled (1e10: nothing hit), -1: none
 };
 
 // Rays traced so far (what Embree was asked), for reports and benchmarks.
