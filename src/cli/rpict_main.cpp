@@ -26,6 +26,7 @@
 #include "radcl/scene/loader.h"
 #include "radcl/scene/raypath.h"
 #include "radcl/util/error.h"
+#include "render_settings.h"
 
 namespace {
 
@@ -34,32 +35,8 @@ using namespace radcl;
 void quiet_warning(const std::string&) {}
 
 render::RenderSettings settings_from(const options::RenderOptions& r) {
-  render::RenderSettings s;
-  s.ds = r.direct_sampling;
-  s.dj = r.direct_jitter;
-  s.dt = r.direct_threshold;
-  s.dc = r.direct_certainty;
-  s.dv = r.direct_visible;
-  s.bv = r.back_visible;
-  s.ss = r.specular_sampling;
-  s.st = r.specular_threshold;
-  s.av = r.ambient_value;
-  s.ab = r.ambient_bounces;
-  s.ad = r.ambient_divisions;
-  if (r.ambient_list.kind != options::ModifierList::Kind::None) {
-    s.ambient_list = r.ambient_list.kind == options::ModifierList::Kind::Include
-                         ? render::RenderSettings::AmbientList::Include
-                         : render::RenderSettings::AmbientList::Exclude;
-    s.ambient_names = r.ambient_list.names;
-  }
-  s.lr = r.max_depth;
-  s.lw = r.min_weight;
-  s.irradiance_i = r.irradiance;
-  s.seed =
-      r.uncorrelated ? static_cast<std::uint32_t>(std::time(nullptr) ^ (::getpid() << 16)) : 0u;
-  s.low_discrepancy = !r.uncorrelated;
-  s.dr = r.direct_relays;
-  s.dp = r.direct_pretest;
+  render::RenderSettings s = cli::render_settings(r);
+  s.low_discrepancy = !r.uncorrelated; // rpict's -u-: pixels stratify each other
   return s;
 }
 

@@ -24,6 +24,7 @@
 #include "radcl/scene/loader.h"
 #include "radcl/scene/raypath.h"
 #include "radcl/util/error.h"
+#include "render_settings.h"
 
 namespace {
 
@@ -33,34 +34,8 @@ bool g_warnings = true;
 void quiet_warning(const std::string&) {}
 
 render::RenderSettings settings_from(const options::RtraceOptions& o) {
-  const options::RenderOptions& r = o.render;
-  render::RenderSettings s;
-  s.ds = r.direct_sampling;
-  s.dj = r.direct_jitter;
-  s.dt = r.direct_threshold;
-  s.dc = r.direct_certainty;
-  s.dv = r.direct_visible;
-  s.bv = r.back_visible;
-  s.ss = r.specular_sampling;
-  s.st = r.specular_threshold;
-  s.av = r.ambient_value;
-  s.ab = r.ambient_bounces;
-  s.ad = r.ambient_divisions;
-  if (r.ambient_list.kind != options::ModifierList::Kind::None) {
-    s.ambient_list = r.ambient_list.kind == options::ModifierList::Kind::Include
-                         ? render::RenderSettings::AmbientList::Include
-                         : render::RenderSettings::AmbientList::Exclude;
-    s.ambient_names = r.ambient_list.names;
-  }
-  s.lr = r.max_depth;
-  s.lw = r.min_weight;
-  s.irradiance_i = r.irradiance;
+  render::RenderSettings s = cli::render_settings(o.render);
   s.irradiance_I = o.immediate_irradiance;
-  // -u+: a new seed every run; -u-: the same numbers every run.
-  s.seed =
-      r.uncorrelated ? static_cast<std::uint32_t>(std::time(nullptr) ^ (::getpid() << 16)) : 0u;
-  s.dr = r.direct_relays;
-  s.dp = r.direct_pretest;
   return s;
 }
 

@@ -2,6 +2,7 @@
 // (srcsupp.c): which surfaces are sources, Radiance's checks and messages, and the geometry the
 // sampling kernels need.
 #include "radcl/render/light_sources.h"
+#include "radcl/util/vec3.h"
 
 #include <algorithm>
 #include <array>
@@ -19,32 +20,11 @@ namespace radcl::render {
 namespace {
 
 using V3 = std::array<double, 3>;
+using namespace radcl::vec;
 using P2 = std::array<double, 2>;
 constexpr double kTiny = 1e-6; // Radiance's FTINY
 constexpr double kPi = std::numbers::pi;
 
-V3 sub(const V3& a, const V3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-V3 add(const V3& a, const V3& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-V3 mul(const V3& a, double s) {
-  return {a[0] * s, a[1] * s, a[2] * s};
-}
-double dot(const V3& a, const V3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-V3 cross(const V3& a, const V3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double len(const V3& a) {
-  return std::sqrt(dot(a, a));
-}
-V3 unit(const V3& a) {
-  const double l = len(a);
-  return l > 0 ? mul(a, 1 / l) : V3{0, 0, 0};
-}
 V3 arg3(const std::vector<double>& f, std::size_t i) {
   return {f[i], f[i + 1], f[i + 2]};
 }
@@ -53,7 +33,7 @@ V3 arg3(const std::vector<double>& f, std::size_t i) {
 V3 perpendicular(const V3& n) {
   const V3 axis =
       std::abs(n[0]) < 0.6 ? V3{1, 0, 0} : (std::abs(n[1]) < 0.6 ? V3{0, 1, 0} : V3{0, 0, 1});
-  return unit(cross(axis, n));
+  return normalized(cross(axis, n));
 }
 
 rc_float4 f4(const V3& v, double w) {
@@ -192,9 +172,9 @@ private:
     if (s.kind == RC_SRC_DISTANT) warning(about(o, "distant source is a spotlight"));
     if (mat.fargs[3] <= kTiny) throw FatalError(about(mat, "zero angle"));
     const V3 aim = arg3(mat.fargs, 4);
-    const double flen = len(aim);
+    const double flen = length(aim);
     if (flen == 0) throw FatalError(about(mat, "zero focus vector"));
-    const V3 dir = mul(aim, 1 / flen);
+    const V3 dir = scale(aim, 1 / flen);
     const double cosh = std::cos(mat.fargs[3] * (kPi / 360));
     s.flags |= RC_SRCF_SPOT;
     s.spot = f4(dir, cosh);
@@ -212,8 +192,8 @@ private:
 
   void set_distant(const scene::Object& o, rc_source& s) {
     if (o.fargs.size() != 4) throw FatalError(about(o, "bad arguments"));
-    const V3 d = unit(arg3(o.fargs, 0));
-    if (len(d) == 0) throw FatalError(about(o, "zero direction"));
+    const V3 d = normalized(arg3(o.fargs, 0));
+    if (length(d) == 0) throw FatalError(about(o, "zero direction"));
     const double theta = kPi / 360 * o.fargs[3];
     if (theta <= kTiny) throw FatalError(about(o, "zero size"));
     const double omega = 2 * kPi * (1 - std::cos(theta));
@@ -232,8 +212,8 @@ private:
 
   void set_ring(const scene::Object& o, rc_source& s) {
     if (o.fargs.size() != 8) throw FatalError(about(o, "bad # arguments"));
-    const V3 n = unit(arg3(o.fargs, 3));
-    if (len(n) == 0) throw FatalError(about(o, "illegal source"));
+    const V3 n = normalized(arg3(o.fargs, 3));
+    if (length(n) == 0) throw FatalError(about(o, "illegal source"));
     double r0 = std::abs(o.fargs[6]) <= kTiny ? 0 : std::abs(o.fargs[6]);
     double r1 = std::abs(o.fargs[7]) <= kTiny ? 0 : std::abs(o.fargs[7]);
     if (r0 > r1) std::swap(r0, r1);
@@ -243,21 +223,21 @@ private:
     s.pos = f4(local(arg3(o.fargs, 0)), r1);
     s.axis = f4(n, kPi * (r1 * r1 - r0 * r0));
     const V3 u = perpendicular(n);
-    s.su = f4(mul(u, r1), r0);
-    s.sv = f4(mul(cross(n, u), r1), 0);
+    s.su = f4(scale(u, r1), r0);
+    s.sv = f4(scale(cross(n, u), r1), 0);
   }
 
   void set_cylinder(const scene::Object& o, rc_source& s) {
     if (o.fargs.size() != 7) throw FatalError(about(o, "bad # arguments"));
     const V3 p0 = arg3(o.fargs, 0), p1 = arg3(o.fargs, 3);
     const double r = std::abs(o.fargs[6]); // a negative radius only turns the normal inward
-    const double l = len(sub(p1, p0));
+    const double l = length(sub(p1, p0));
     if (l == 0) throw FatalError(about(o, "illegal source"));
     if (r <= kTiny) throw FatalError(about(o, "illegal source radius"));
     if (r > 0.2 * l) warning(about(o, "source aspect too small"));
     s.kind = RC_SRC_CYLINDER;
-    s.pos = f4(local(mul(add(p0, p1), 0.5)), r);
-    s.axis = f4(mul(sub(p1, p0), 1 / l), l);
+    s.pos = f4(local(scale(add(p0, p1), 0.5)), r);
+    s.axis = f4(scale(sub(p1, p0), 1 / l), l);
   }
 
   void set_polygon(const scene::Object& o, rc_source& s) {
@@ -273,11 +253,11 @@ private:
     V3 avg{0, 0, 0};
     for (const V3& p : v)
       avg = add(avg, p);
-    avg = mul(avg, 1.0 / static_cast<double>(v.size()));
+    avg = scale(avg, 1.0 / static_cast<double>(v.size()));
     if (!in_face(avg, v, n)) throw FatalError(about(o, "cannot hit source center"));
 
     // In-plane frame (u, w), u x w = n, at the vertex average moved onto the plane.
-    const V3 org = sub(avg, mul(n, dot(n, avg) - pl.offset));
+    const V3 org = sub(avg, scale(n, dot(n, avg) - pl.offset));
     const V3 u = perpendicular(n), w = cross(n, u);
     std::vector<P2> q(v.size());
     for (std::size_t i = 0; i < v.size(); ++i)
@@ -291,7 +271,7 @@ private:
       cy += (q[j][1] + q[i][1]) * c;
     }
     const P2 cen = std::abs(a2) > 0 ? P2{cx / (3 * a2), cy / (3 * a2)} : P2{0, 0};
-    const V3 pos = add(org, add(mul(u, cen[0]), mul(w, cen[1])));
+    const V3 pos = add(org, add(scale(u, cen[0]), scale(w, cen[1])));
     double rad2 = 0;
     for (const V3& p : v)
       rad2 = std::max(rad2, dot(sub(p, pos), sub(p, pos)));
@@ -299,7 +279,7 @@ private:
     s.kind = RC_SRC_FLAT;
     s.pos = f4(local(pos), std::sqrt(rad2));
     s.axis = f4(n, pl.area);
-    V3 su, sv, rc;
+    V3 su{}, sv{}, rc{};
     if (!parallelogram(v, su, sv))
       covering_rectangle(q, u, w, org, su, sv, rc);
     else
@@ -321,9 +301,9 @@ private:
   static bool parallelogram(const std::vector<V3>& v, V3& su, V3& sv) {
     if (v.size() != 4) return false;
     const V3 gap = sub(add(v[0], v[2]), add(v[1], v[3]));
-    su = mul(sub(v[1], v[0]), 0.5);
-    sv = mul(sub(v[3], v[0]), 0.5);
-    return len(gap) <= 1e-6 * (len(su) + len(sv));
+    su = scale(sub(v[1], v[0]), 0.5);
+    sv = scale(sub(v[3], v[0]), 0.5);
+    return length(gap) <= 1e-6 * (length(su) + length(sv));
   }
 
   // Smallest-area rectangle with a side along a convex-hull edge (the minimum is one of them).
@@ -346,10 +326,10 @@ private:
       const double area = (hi0 - lo0) * (hi1 - lo1);
       if (area >= best) continue;
       best = area;
-      const V3 e3 = add(mul(u, e[0]), mul(w, e[1])), f3 = add(mul(u, f[0]), mul(w, f[1]));
-      su = mul(e3, 0.5 * (hi0 - lo0));
-      sv = mul(f3, 0.5 * (hi1 - lo1));
-      rc = add(org, add(mul(e3, 0.5 * (lo0 + hi0)), mul(f3, 0.5 * (lo1 + hi1))));
+      const V3 e3 = add(scale(u, e[0]), scale(w, e[1])), f3 = add(scale(u, f[0]), scale(w, f[1]));
+      su = scale(e3, 0.5 * (hi0 - lo0));
+      sv = scale(f3, 0.5 * (hi1 - lo1));
+      rc = add(org, add(scale(e3, 0.5 * (lo0 + hi0)), scale(f3, 0.5 * (lo1 + hi1))));
     }
   }
 };

@@ -1,6 +1,7 @@
 // Virtual sources for planar mirrors (Radiance's markvirtuals(), mir_proj(), makevsrc(),
 // vstestvis()). Everything is in the re-centred frame of the compiled sources.
 #include "radcl/render/virtual_sources.h"
+#include "radcl/util/vec3.h"
 
 #include <algorithm>
 #include <array>
@@ -17,27 +18,9 @@ namespace radcl::render {
 namespace {
 
 using V3 = std::array<double, 3>;
+using namespace radcl::vec;
 constexpr double kTiny = 1e-6; // Radiance's FTINY
 
-V3 sub(const V3& a, const V3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-V3 add(const V3& a, const V3& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-V3 mul(const V3& a, double s) {
-  return {a[0] * s, a[1] * s, a[2] * s};
-}
-double dot(const V3& a, const V3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-V3 cross(const V3& a, const V3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-V3 unit(const V3& a) {
-  const double l = std::sqrt(dot(a, a));
-  return l > 0 ? mul(a, 1 / l) : V3{0, 0, 0};
-}
 V3 xyz(const rc_float4& f) {
   return {f.x, f.y, f.z};
 }
@@ -56,8 +39,8 @@ struct Mirror {
   std::vector<V3> verts;      // polygon
   bool ring = false;
 
-  V3 reflect_point(const V3& p) const { return sub(p, mul(n, 2 * (dot(n, p) - offset))); }
-  V3 reflect_vector(const V3& v) const { return sub(v, mul(n, 2 * dot(n, v))); }
+  V3 reflect_point(const V3& p) const { return sub(p, scale(n, 2 * (dot(n, p) - offset))); }
+  V3 reflect_vector(const V3& v) const { return sub(v, scale(n, 2 * dot(n, v))); }
 
   // Whether plane point q lies within the outline (even-odd rule in the plane's frame).
   bool contains(const V3& q) const {
@@ -80,7 +63,7 @@ struct Mirror {
 V3 perpendicular(const V3& n) {
   const V3 axis =
       std::abs(n[0]) < 0.6 ? V3{1, 0, 0} : (std::abs(n[1]) < 0.6 ? V3{0, 1, 0} : V3{0, 0, 1});
-  return unit(cross(axis, n));
+  return normalized(cross(axis, n));
 }
 
 // Deterministic uniform numbers in [0, 1) (a splitmix64 stream).
@@ -143,14 +126,14 @@ private:
         mr.offset = pl.offset;
         V3 avg{0, 0, 0};
         for (const V3& v : mr.verts)
-          avg = add(avg, mul(v, 1.0 / static_cast<double>(mr.verts.size())));
-        mr.centre = sub(avg, mul(mr.n, dot(mr.n, avg) - mr.offset));
+          avg = add(avg, scale(v, 1.0 / static_cast<double>(mr.verts.size())));
+        mr.centre = sub(avg, scale(mr.n, dot(mr.n, avg) - mr.offset));
         for (const V3& v : mr.verts)
           mr.rad2 = std::max(mr.rad2, dot(sub(v, mr.centre), sub(v, mr.centre)));
       } else {
         if (o.fargs.size() != 8) continue;
         mr.ring = true;
-        mr.n = unit({o.fargs[3], o.fargs[4], o.fargs[5]});
+        mr.n = normalized({o.fargs[3], o.fargs[4], o.fargs[5]});
         mr.centre = sub({o.fargs[0], o.fargs[1], o.fargs[2]}, c);
         mr.offset = dot(mr.n, mr.centre);
         mr.r0 = std::abs(o.fargs[6]);
@@ -266,7 +249,7 @@ private:
       if (dn >= -kTiny) return 0;
       const double t = (m.offset - dot(m.n, org)) / dn;
       if (t <= 0) return 0;
-      org = add(org, mul(dir, t));
+      org = add(org, scale(dir, t));
       if (!m.contains(org)) return 0;
       f *= std::max({m.dev.refl.x, m.dev.refl.y, m.dev.refl.z});
       dir = m.reflect_vector(dir);
@@ -301,7 +284,7 @@ private:
       V3 q;
       do {
         if (tries++ >= limit) return true; // too small a target to tell: follow every ray
-        q = add(m.centre, add(mul(m.u, r * (2 * rnd() - 1)), mul(m.w, r * (2 * rnd() - 1))));
+        q = add(m.centre, add(scale(m.u, r * (2 * rnd() - 1)), scale(m.w, r * (2 * rnd() - 1))));
       } while (!m.contains(q));
       V3 dir;
       double dist;
@@ -312,7 +295,7 @@ private:
         const V3 to = sub(xyz(s.pos), q);
         dist = std::sqrt(dot(to, to));
         if (dist <= 0) continue;
-        dir = mul(to, 1 / dist);
+        dir = scale(to, 1 / dist);
       }
       // Radiance counts only samples the source would light (its front, its spot, the way
       // through its own mirrors).
