@@ -65,6 +65,9 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
 /* Lineage bit: the ray descends from the primary hit's pure specular reflection, whose
  * contribution rtrace reports as "mirrored" (-o r, x, R, l). */
 #define RC_RAY_MIRRORED 32u
+/* Lineage bit: the ray continues the primary straight through transmitting surfaces (glass,
+ * dielectric): rtrace's unmirrored length (-o X, l) adds these rays' lengths. */
+#define RC_RAY_THROUGH 64u
 
 /* One ray of a wave. org.w = tmin, dir.w = tmax; coef.xyz is the accumulated coefficient
  * (product of material coefficients down the tree), coef.w the scalar ray weight that -lw cuts. */

@@ -147,6 +147,13 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     r.flags = kind | rc_crtype(parent->flags);
     if (kind == RC_RAY_REFLECTED && (parent->flags & RC_RAY_KIND_MASK) == RC_RAY_PRIMARY)
       r.flags |= RC_RAY_MIRRORED;
+    /* Only an unbroken chain of transmissions from the primary keeps the "through" bit. */
+    uint pk = parent->flags & RC_RAY_KIND_MASK;
+    if (kind == RC_RAY_TRANSMITTED &&
+        (pk == RC_RAY_PRIMARY || (pk == RC_RAY_TRANSMITTED && (parent->flags & RC_RAY_THROUGH))))
+      r.flags |= RC_RAY_THROUGH;
+    else
+      r.flags &= ~RC_RAY_THROUGH;
     r.sample = rc_child_sample(parent->sample, o->nspawn);
     r.ambient_depth = ambient_depth;
     r.cext_r = o->cext.x;

@@ -209,13 +209,23 @@ private:
     // and its length come from the first hit's pure specular reflection, as Radiance's.
     o.contribution = r.value;
     o.mirrored = r.mirrored;
+    rc_object_type type = r.surface < cs.surfaces.size()
+                              ? static_cast<rc_object_type>(cs.surfaces[r.surface].type)
+                              : RC_OBJ_SPHERE;
+    bool flat = type == RC_OBJ_POLYGON || type == RC_OBJ_RING;
+    // Seen through glass (or a flat dielectric), the unmirrored image lies behind it: the
+    // transmitted rays' lengths add, as Radiance's m_glass/m_dielectric set rxt.
+    if (r.hit && r.through_t >= 0 && r.surface < cs.surfaces.size()) {
+      std::uint32_t m = cs.surfaces[r.surface].material;
+      rc_object_type mt = m < cs.materials.size()
+                              ? static_cast<rc_object_type>(cs.materials[m].type)
+                              : RC_OBJ_PLASTIC;
+      if (mt == RC_OBJ_GLASS || (flat && (mt == RC_OBJ_DIELECTRIC || mt == RC_OBJ_INTERFACE)))
+        o.unmirrored_length = o.effective_length = r.t + r.through_t;
+    }
     if (r.hit && r.mirror_t >= 0) {
       // A flat mirror's image lies behind it (the reflected ray's length adds); a curved one's
       // is taken at the surface, as Radiance's m_normal/m_glass do.
-      rc_object_type type = r.surface < cs.surfaces.size()
-                                ? static_cast<rc_object_type>(cs.surfaces[r.surface].type)
-                                : RC_OBJ_SPHERE;
-      bool flat = type == RC_OBJ_POLYGON || type == RC_OBJ_RING;
       o.mirrored_length = r.t + (flat ? r.mirror_t : 0.0);
       auto bright = [](const options::Vec3& c) {
         return 0.265074126 * c[0] + 0.670114631 * c[1] + 0.064811243 * c[2];

@@ -252,7 +252,7 @@ struct Renderer::Impl {
     bool first_wave = true;
     while (!queue.empty()) {
       std::size_t n = queue.size();
-      if (!(first_wave && settings.irradiance_I)) trace(queue, hits, res, first_wave, first_index);
+      if (!(first_wave && settings.irradiance_I)) trace(queue, hits, res, first_wave);
       first_wave = false;
 
       // Count every ray's shadow and child rays, then shade in slices whose outputs fit the
@@ -352,7 +352,7 @@ struct Renderer::Impl {
 
   // Embree over the wave; depth-0 hits also fill the primaries' geometric results.
   void trace(const std::vector<rc_ray>& queue, std::vector<rc_hit>& hits,
-             std::span<PrimaryResult> res, bool primaries, std::size_t first_index) {
+             std::span<PrimaryResult> res, bool primaries) {
     std::size_t n = queue.size();
     std::vector<geometry::Ray> rays(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -373,6 +373,13 @@ struct Renderer::Impl {
       if ((queue[i].flags & RC_RAY_MIRRORED) &&
           (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED && queue[i].depth == 1)
         results[slot(queue[i].primary)].mirror_t = gh[i] ? gh[i]->t : 1e10;
+    // The straight continuation through transmitting surfaces: its lengths add up (X).
+    for (std::size_t i = 0; i < n; ++i)
+      if ((queue[i].flags & RC_RAY_THROUGH) &&
+          (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_TRANSMITTED) {
+        double& t = results[slot(queue[i].primary)].through_t;
+        t = std::max(t, 0.0) + (gh[i] ? gh[i]->t : 1e10);
+      }
     if (!primaries) return;
     for (std::size_t i = 0; i < n; ++i) {
       PrimaryResult& r = res[slot(queue[i].primary)];

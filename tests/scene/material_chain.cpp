@@ -61,8 +61,10 @@ bright source sun 0 0 4 0 0 1 .5
 )");
   std::vector<bool> expect = {true, false, true, false, false, true, true, true};
   std::size_t k = 0;
-  for (std::size_t i = 0; i < sd.objects.size(); ++i)
-    if (is_surface(sd.objects[i].type))
+  for (std::size_t i = 0; i < sd.objects.size(); ++i) {
+    if (is_surface(sd.objects[i].type)) {
       EXPECT_EQ(is_light_source(sd, static_cast<std::int32_t>(i)), expect[k++])
           << sd.objects[i].name;
+    }
+  }
 }

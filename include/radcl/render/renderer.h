@@ -65,6 +65,7 @@ struct PrimaryResult {
   std::uint32_t surface = RC_NONE; // compiled surface of the first hit (names), or RC_NONE
   Vec3d mirrored{};     // part of `value` that came through the first hit's mirror reflection
   double mirror_t = -1; // distance the mirror-reflected ray travelled (1e10: nothing hit), -1: none
+  double through_t = -1; // length of the straight transmission beyond the first hit, -1: none
 };
 
 // Rays traced so far (what Embree was asked), for reports and benchmarks.
