@@ -1,4 +1,5 @@
 #include "radcl/options/view.h"
+#include "radcl/options/ray_io.h"
 
 #include "cformat.h"
 
@@ -69,22 +70,6 @@ int view_option(View& v, int ac, const char* const* av) {
   default:
     return -1;
   }
-}
-
-double normalize(Vec3& v) {
-  double d = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-  if (d == 0.0) return 0.0;
-  double len;
-  if (d <= 1.0 + kFtiny && d >= 1.0 - kFtiny) { // Radiance's first-order shortcut
-    len = 0.5 + 0.5 * d;
-    d = 2.0 - len;
-  } else {
-    len = std::sqrt(d);
-    d = 1.0 / len;
-  }
-  for (double& c : v)
-    c *= d;
-  return len;
 }
 
 Vec3 cross(const Vec3& a, const Vec3& b) {
@@ -159,11 +144,11 @@ std::string setup_view(View& v) {
   if (v.fore < -kFtiny || v.aft < -kFtiny || (v.aft > kFtiny && v.aft <= v.fore))
     return "illegal fore/aft clipping plane";
   if (v.focal <= kFtiny) return "illegal view distance";
-  v.focal *= normalize(v.direction);
+  v.focal *= normalize_direction(v.direction);
   if (v.focal == 0.0) return "zero view direction";
-  if (normalize(v.up) == 0.0) return "zero view up vector";
+  if (normalize_direction(v.up) == 0.0) return "zero view up vector";
   v.hvec = cross(v.direction, v.up);
-  if (normalize(v.hvec) == 0.0) return "view up parallel to view direction";
+  if (normalize_direction(v.hvec) == 0.0) return "view up parallel to view direction";
   v.vvec = cross(v.hvec, v.direction);
   if (v.horiz <= kFtiny) return ill_horiz;
   if (v.vert <= kFtiny) return ill_vert;
