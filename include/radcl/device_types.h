@@ -81,6 +81,12 @@ typedef struct rc_ray {
   rc_u32 sample;        /* sample index within its parent, keys the random numbers */
   rc_u32 ambient_depth; /* ambient bounces taken so far (Radiance's r->rlvl for -ab) */
   float cext_r, cext_g, cext_b; /* extinction per unit length of the medium it travels in */
+  rc_u32 tally;  /* host tally its contributions add to (the primary's slot unless the host
+                    splits the tree: hemisphere cells for -as, every ray in trace mode) */
+  rc_u32 clip;   /* antimatter: bit set of the clipped modifiers the ray is inside */
+  rc_u32 inside; /* antimatter: four signed 8-bit crossing counts (one per antimatter with a
+                    shading modifier) */
+  rc_u32 pad0;
 } rc_ray;
 
 /* The host's answer for one ray of a wave (from Embree). */
@@ -171,8 +177,11 @@ typedef struct rc_shadow {
   rc_float4 cext;    /* extinction of the medium the shadow ray travels in (rgb), w unused */
   rc_u32 primary;
   rc_u32 source; /* source index: the ray counts only if it reaches this source unblocked */
-  rc_u32 pad0;
+  rc_u32 pad0;   /* -dt estimate records: the number of tested requests before it */
   rc_u32 pad1;
+  rc_u32 clip;   /* antimatter state of the surface point it leaves (as rc_ray) */
+  rc_u32 inside;
+  rc_u32 pad2, pad3;
 } rc_shadow;
 
 /* Rendering settings the kernels read (from the -d*, -s*, -a*, -l* options). */
@@ -210,7 +219,7 @@ typedef struct rc_rng_key {
   S(rc_rng_key) S(rc_params)
 #define RADCL_LAYOUT_FIELDS(F)                                                                 \
   F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
-  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b)                  \
+  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside) F(rc_ray, pad0)                  \
   F(rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim)               \
   F(rc_hit, source) F(rc_hit, front)                                                           \
   F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(rc_surface, object)      \
@@ -222,7 +231,7 @@ typedef struct rc_rng_key {
   F(rc_source, mirror) F(rc_mirror, plane) F(rc_mirror, centre) F(rc_mirror, refl)             \
   F(rc_mirror, surface) F(rc_mirror, verts) F(rc_mirror, nverts) F(rc_mirror, pad0)            \
   F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, cext) F(rc_shadow, primary)              \
-  F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1)                                   \
+  F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1) F(rc_shadow, clip) F(rc_shadow, inside) F(rc_shadow, pad3)                                   \
   F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)    \
   F(rc_params, av) F(rc_params, direct) F(rc_params, spec) F(rc_params, seed)                  \
   F(rc_params, lr) F(rc_params, flags) F(rc_params, ab) F(rc_params, nsources)                 \

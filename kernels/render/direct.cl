@@ -122,7 +122,7 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
       float3 v = rc_ward_iso_direct(m, ls, l, omega, n, d, flat);
       float3 c = v * coef;
       if (rc_max3(c) <= 0.0f) continue;
-      rc_emit_shadow(o, p, l, eps, dist, c, r->primary, s);
+      rc_emit_shadow(o, p, l, eps, dist, c, r, s);
       if (select && o->write) o->shadows[o->nshadow - 1u].contrib.w = rc_bright(v);
     }
   }

@@ -85,15 +85,17 @@ static inline void rc_out_init(rc_out* o, int write) {
 }
 
 static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
-                                  float3 contrib, uint primary, uint source) {
+                                  float3 contrib, const rc_ray* r, uint source) {
   if (o->write) {
     rc_shadow s;
     s.org = (float4)(org, tmin);
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
     s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
-    s.pad0 = s.pad1 = 0;
-    s.primary = primary;
+    s.pad0 = s.pad1 = s.pad2 = s.pad3 = 0;
+    s.clip = r->clip;
+    s.inside = r->inside;
+    s.primary = r->primary;
     s.source = source;
     o->shadows[o->nshadow] = s;
   }
@@ -143,6 +145,10 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     r.dir = (float4)(dir, INFINITY);
     r.coef = (float4)(parent->coef.xyz * coef, weight);
     r.primary = parent->primary;
+    r.tally = parent->tally;
+    r.clip = parent->clip;
+    r.inside = parent->inside;
+    r.pad0 = 0;
     r.depth = depth;
     r.flags = kind | rc_crtype(parent->flags);
     if (kind == RC_RAY_REFLECTED && (parent->flags & RC_RAY_KIND_MASK) == RC_RAY_PRIMARY)

@@ -229,6 +229,7 @@ struct Renderer::Impl {
       r.coef = f4(1, 1, 1, 1);
       r.primary = prim[i].id != RC_NONE ? prim[i].id : static_cast<std::uint32_t>(first_index + i);
       r.flags = RC_RAY_PRIMARY;
+      r.tally = static_cast<std::uint32_t>(i);
     }
     if (settings.irradiance_I) {
       // The measurement point is a diffuse meter facing the given direction (1e-4 along it,
@@ -335,7 +336,7 @@ struct Renderer::Impl {
     ctx.run(accumulate, n);
     std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
     for (std::size_t i = 0; i < n; ++i) {
-      Vec3d& s = sums[slot(rays[i].primary)];
+      Vec3d& s = sums[rays[i].tally];
       s[0] += total[i].x;
       s[1] += total[i].y;
       s[2] += total[i].z;
