@@ -86,8 +86,17 @@ typedef struct rc_ray {
   rc_u32 clip;   /* antimatter: bit set of the clipped modifiers the ray is inside */
   rc_u32 inside; /* antimatter: four signed 8-bit crossing counts (one per antimatter with a
                     shading modifier) */
-  rc_u32 pad0;
+  rc_u32 cell;   /* a hemisphere sample the host may super-sample: RC_CELL_* bits, else 0 */
 } rc_ray;
+
+/* rc_ray.cell of the first samples of a hemisphere whose -as super-sampling the host decides
+ * (Radiance's ambsupersamp): which of the ray's hemispheres, the super-sample budget and the
+ * division index (row * ns + column). */
+#define RC_CELL_FLAG 0x80000000u
+#define RC_CELL_WHICH(c) (((c) >> 29) & 3u)
+#define RC_CELL_BUDGET(c) (((c) >> 16) & 0x1FFFu)
+#define RC_CELL_INDEX(c) ((c)&0xFFFFu)
+#define RC_CELL_MAX_BUDGET 0x1FFFu
 
 /* The host's answer for one ray of a wave (from Embree). */
 typedef struct rc_hit {
@@ -200,7 +209,7 @@ typedef struct rc_params {
   rc_u32 nsources;
   rc_u32 irradiance_material; /* built-in material of -i/-I */
   rc_u32 ad;                  /* -ad ambient divisions */
-  rc_u32 pad1;
+  rc_u32 as;                  /* -as ambient super-samples */
 } rc_params;
 
 /* Counter-based random-number key: (primary ray, sample, depth, seed). */
@@ -219,7 +228,7 @@ typedef struct rc_rng_key {
   S(rc_rng_key) S(rc_params)
 #define RADCL_LAYOUT_FIELDS(F)                                                                 \
   F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
-  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside) F(rc_ray, pad0)                  \
+  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside) F(rc_ray, cell)                  \
   F(rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim)               \
   F(rc_hit, source) F(rc_hit, front)                                                           \
   F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(rc_surface, object)      \
@@ -235,6 +244,6 @@ typedef struct rc_rng_key {
   F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)    \
   F(rc_params, av) F(rc_params, direct) F(rc_params, spec) F(rc_params, seed)                  \
   F(rc_params, lr) F(rc_params, flags) F(rc_params, ab) F(rc_params, nsources)                 \
-  F(rc_params, irradiance_material) F(rc_params, pad1)
+  F(rc_params, irradiance_material) F(rc_params, ad) F(rc_params, as)
 
 #endif /* RADCL_DEVICE_TYPES_H */

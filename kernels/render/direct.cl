@@ -94,6 +94,7 @@ static void rc_direct_select(global rc_shadow* g, uint n, float known, const rc_
 static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, const rc_ray* r,
                       float3 p, float3 n, float3 d, int flat, float3 coef, float known,
                       rc_rng_key key) {
+  if (o->super) return; /* the -as pass writes only super-samples */
   const rc_params* P = &S->params;
   float eps = P->spec.z;
   uint dim = 64;

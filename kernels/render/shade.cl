@@ -74,6 +74,11 @@ typedef struct rc_out {
   float3 immediate; /* contributions that need no shadow test (emission, ambient value) */
   float3 cext;      /* medium of the rays this hit spawns */
   float wfac;       /* extinction estimate on their weight (Radiance's rayorigin) */
+  /* -as second pass: per-division super-sample counts of hemisphere `super_which` of this
+   * ray ([0] = which, then ns * ns counts); only those samples are written. Else null. */
+  global const uint* super;
+  uint nhemi; /* hemispheres sampled so far by this ray */
+  uint child; /* sample number of the next child (keys its random numbers) */
 } rc_out;
 
 static inline void rc_out_init(rc_out* o, int write) {
@@ -82,10 +87,14 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->immediate = (float3)(0.0f);
   o->cext = (float3)(0.0f);
   o->wfac = 1.0f;
+  o->super = 0;
+  o->nhemi = 0;
+  o->child = 0;
 }
 
 static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
                                   float3 contrib, const rc_ray* r, uint source) {
+  if (o->super) return;
   if (o->write) {
     rc_shadow s;
     s.org = (float4)(org, tmin);
@@ -148,7 +157,7 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     r.tally = parent->tally;
     r.clip = parent->clip;
     r.inside = parent->inside;
-    r.pad0 = 0;
+    r.cell = 0;
     r.depth = depth;
     r.flags = kind | rc_crtype(parent->flags);
     if (kind == RC_RAY_REFLECTED && (parent->flags & RC_RAY_KIND_MASK) == RC_RAY_PRIMARY)
@@ -160,7 +169,7 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
       r.flags |= RC_RAY_THROUGH;
     else
       r.flags &= ~RC_RAY_THROUGH;
-    r.sample = rc_child_sample(parent->sample, o->nspawn);
+    r.sample = rc_child_sample(parent->sample, o->child);
     r.ambient_depth = ambient_depth;
     r.cext_r = o->cext.x;
     r.cext_g = o->cext.y;
@@ -168,16 +177,20 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     o->spawned[o->nspawn] = r;
   }
   o->nspawn++;
+  o->child++;
 }
 
 /* Spawns a child ray if rayorigin()'s rules let it live. */
 static inline void rc_spawn(rc_out* o, const rc_ray* parent, float3 org, float3 dir, float3 coef,
                             uint kind, float tmin, const rc_params* P, rc_rng_key key, uint dim,
                             uint ambient_depth) {
+  if (o->super) return; /* the -as pass writes only its super-samples */
   uint depth;
   float weight = rc_child_weight(o, parent, &coef, kind, P, key, dim, &depth);
   if (weight > 0.0f)
     rc_emit_ray(o, parent, org, dir, coef, kind, tmin, weight, depth, ambient_depth);
+  else
+    o->child++;
 }
 
 /* Shirley and Chiu's concentric map of the unit square onto the unit disc. */
@@ -195,10 +208,21 @@ static inline float2 rc_square_to_disk(float sx, float sy) {
   return (float2)(r * cos(phi), r * sin(phi));
 }
 
+/* One stratified cosine-weighted direction in division (i, j) of an ns x ns hemisphere. */
+static inline float3 rc_hemi_dir(float3 n, float3 ux, float3 uy, uint i, uint j, uint ns,
+                                 float s0, float s1) {
+  float2 d = rc_square_to_disk((j + s0) / ns, (i + s1) / ns);
+  float z = sqrt(fmax(0.0f, 1.0f - d.x * d.x - d.y * d.y));
+  return normalize(d.x * ux + d.y * uy + z * n);
+}
+
 /* Indirect diffuse light without a cache (-aa 0): Radiance's stratified hemisphere of n x n
  * cosine-weighted samples, n = sqrt(-ad x weight), each carrying acoef / n^2; with no bounce
  * left, or on a surface the -ae/-ai lists leave out (`dumb`), the ambient value -av instead.
- * (-as super-sampling is not done: it only moves samples towards high-variance divisions.)
+ * When Radiance would super-sample (-as; every division sampled, more than 7 x 7 of them, a
+ * budget above 8), the samples are marked for the host, which gathers their values, spreads
+ * the budget over the divisions by their neighbour differences and asks for the extra samples
+ * in a second pass over this ray (o->super).
  * Returns what it adds to the ray's own value now (the ambient value, without the ray's
  * coefficient); sampled light comes later. */
 static float3 rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 acoef, int dumb,
@@ -218,14 +242,42 @@ static float3 rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 
   float3 ux =
       normalize(fabs(n.x) < 0.6f ? cross(n, (float3)(1, 0, 0)) : cross(n, (float3)(0, 1, 0)));
   float3 uy = cross(n, ux);
+  uint which = o->nhemi++;
+  if (o->super) {
+    if (which != o->super[0]) return (float3)(0.0f);
+    global const uint* counts = o->super + 1;
+    for (uint cell = 0; cell < ns * ns; ++cell) {
+      uint i = cell / ns, j = cell % ns;
+      rc_rng_key k = key;
+      k.sample = rc_child_sample(key.sample ^ 0x5EED5A3Bu, (which << 20) + cell);
+      for (uint m = 1; m <= counts[cell]; ++m) {
+        float3 dir = rc_hemi_dir(n, ux, uy, i, j, ns, rc_random(k, 3u * m), rc_random(k, 3u * m + 1u));
+        uint depth;
+        float3 cc = c;
+        float weight = rc_child_weight(o, r, &cc, RC_RAY_AMBIENT, P, k, 3u * m + 2u, &depth);
+        if (weight <= 0.0f) break; /* Radiance stops this division's super-samples */
+        /* Child numbers apart from the first pass's keep the random streams apart. */
+        o->child = 0x80000000u | (((which * 65536u + cell) * 8192u + m) & 0x7FFFFFFFu);
+        rc_emit_ray(o, r, p, dir, cc, RC_RAY_AMBIENT, P->spec.z, weight, depth,
+                    r->ambient_depth + 1u);
+        if (o->write) o->spawned[o->nspawn - 1u].cell = RC_CELL_FLAG | (which << 29) | cell;
+      }
+    }
+    return (float3)(0.0f);
+  }
+  uint start = o->nspawn;
   for (uint i = 0; i < ns; ++i)
     for (uint j = 0; j < ns; ++j, dim += 3) {
-      float2 d =
-          rc_square_to_disk((j + rc_random(key, dim)) / ns, (i + rc_random(key, dim + 1)) / ns);
-      float z = sqrt(fmax(0.0f, 1.0f - d.x * d.x - d.y * d.y));
-      float3 dir = normalize(d.x * ux + d.y * uy + z * n);
+      float3 dir = rc_hemi_dir(n, ux, uy, i, j, ns, rc_random(key, dim), rc_random(key, dim + 1));
       rc_spawn(o, r, p, dir, c, RC_RAY_AMBIENT, P->spec.z, P, key, dim + 2, r->ambient_depth + 1u);
     }
+  float budget = (float)P->as * wt + 0.5f;
+  if (o->write && P->as > 0u && o->nspawn - start == ns * ns && ns * ns > 49u &&
+      ns * ns <= 65536u && budget >= 9.0f) {
+    uint b = min((uint)budget, RC_CELL_MAX_BUDGET);
+    for (uint k = 0; k < ns * ns; ++k)
+      o->spawned[start + k].cell = RC_CELL_FLAG | (which << 29) | (b << 16) | k;
+  }
   return (float3)(0.0f);
 }
 
@@ -573,12 +625,14 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   S.params = *params;
 
 kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
-                     global uint* nshadow, global uint* nspawn) {
+                     global uint* nshadow, global uint* nspawn, uint super_mode,
+                     global const uint* super_offset, global const uint* super_data) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
   rc_out o;
   rc_out_init(&o, 0);
+  if (super_mode) o.super = super_data + super_offset[i];
   rc_shade_ray(&S, &o, rays[i], hits[i]);
   nshadow[i] = o.nshadow;
   nspawn[i] = o.nspawn;
@@ -586,12 +640,15 @@ kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint 
 
 kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
                      global const uint* shadow_offset, global const uint* spawn_offset,
-                     global rc_shadow* shadows, global rc_ray* spawned, global float4* immediate) {
+                     global rc_shadow* shadows, global rc_ray* spawned, global float4* immediate,
+                     uint super_mode, global const uint* super_offset,
+                     global const uint* super_data) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
   rc_out o;
   rc_out_init(&o, 1);
+  if (super_mode) o.super = super_data + super_offset[i];
   o.shadows = shadows + shadow_offset[i];
   o.spawned = spawned + spawn_offset[i];
   rc_shade_ray(&S, &o, rays[i], hits[i]);

@@ -20,6 +20,7 @@ render::RenderSettings render_settings(const options::RenderOptions& r) {
   s.av = r.ambient_value;
   s.ab = r.ambient_bounces;
   s.ad = r.ambient_divisions;
+  s.as = r.ambient_supersamples;
   if (r.ambient_list.kind != options::ModifierList::Kind::None) {
     s.ambient_list = r.ambient_list.kind == options::ModifierList::Kind::Include
                          ? render::RenderSettings::AmbientList::Include

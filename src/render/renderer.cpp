@@ -9,6 +9,7 @@
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
 #include "radcl/device/program.h"
+#include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
 #include "radcl/util/error.h"
 
@@ -54,6 +55,9 @@ struct Renderer::Impl {
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params;
   Vec3d centre;
   RenderStats stats;
+  // -as: hemisphere samples tally per division until the super-samples are decided.
+  bool tree = false;
+  TallyTree tally;
 
   // Per-wave buffers, kept between waves and grown when a wave needs more: allocating them
   // afresh every wave spends more time clearing pages than shading.
@@ -72,6 +76,8 @@ struct Renderer::Impl {
     kStepRays,
     kStepHits,
     kStepState,
+    kSuperOff,
+    kSuperData,
     kSlots
   };
   std::vector<device::Buffer> pool = std::vector<device::Buffer>(kSlots);
@@ -114,6 +120,8 @@ struct Renderer::Impl {
     p.nsources = static_cast<std::uint32_t>(cs.sources.sources.size());
     p.irradiance_material = cs.irradiance_material;
     p.ad = static_cast<std::uint32_t>(std::max(0, st.ad));
+    tree = st.as > 0 && st.ab > 0 && st.ad > 0;
+    p.as = tree ? static_cast<std::uint32_t>(st.as) : 0u;
     params.write(&p, sizeof p);
     upload_sources();
     add_virtual_sources(
@@ -218,6 +226,7 @@ struct Renderer::Impl {
     std::vector<Vec3d> mirror_sums(prim.size(), Vec3d{0, 0, 0});
     mirrored = &mirror_sums;
     results = res;
+    if (tree) tally.reset(prim.size(), settings.seed);
     for (std::size_t i = 0; i < prim.size(); ++i) {
       Vec3d d = unit(prim[i].dir);
       Vec3d o = prim[i].org;
@@ -265,7 +274,7 @@ struct Renderer::Impl {
       std::uint32_t un = static_cast<std::uint32_t>(n);
       count.arg(0, brays).arg(1, bhits).arg(2, un);
       set_scene_args(count, 3);
-      count.arg(10, bnshadow).arg(11, bnspawn);
+      count.arg(10, bnshadow).arg(11, bnspawn).arg(12, 0u).arg(13, bnspawn).arg(14, bnspawn);
       ctx.run(count, n);
       std::vector<std::uint32_t> nsh = bnshadow.to_vector<std::uint32_t>(n);
       std::vector<std::uint32_t> nsp = bnspawn.to_vector<std::uint32_t>(n);
@@ -283,12 +292,60 @@ struct Renderer::Impl {
         shade_slice(queue, hits, a, b, nsh, nsp, sums, next);
         a = b;
       }
+      if (tree)
+        for (auto req = tally.take_requests(); !req.empty(); req = tally.take_requests())
+          supersample(req, next);
       queue = std::move(next);
     }
     for (std::size_t i = 0; i < prim.size(); ++i) {
-      res[i].value = sums[i];
-      res[i].mirrored = mirror_sums[i];
+      res[i].value = tree ? tally.sum(i) : sums[i];
+      res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
     }
+  }
+
+  // The second pass of -as: the hemispheres' rays are shaded again and write only the
+  // super-samples the tally tree asked for.
+  void supersample(const std::vector<TallyTree::SuperRequest>& req, std::vector<rc_ray>& next) {
+    std::size_t n = req.size();
+    std::vector<rc_ray> rays(n);
+    std::vector<rc_hit> hit(n);
+    std::vector<std::uint32_t> off(n), data;
+    for (std::size_t i = 0; i < n; ++i) {
+      rays[i] = req[i].ray;
+      hit[i] = req[i].hit;
+      off[i] = static_cast<std::uint32_t>(data.size());
+      data.push_back(req[i].which);
+      data.insert(data.end(), req[i].counts.begin(), req[i].counts.end());
+    }
+    std::uint32_t un = static_cast<std::uint32_t>(n);
+    device::Buffer& brays = scratch(kRays, rays);
+    device::Buffer& bhits = scratch(kHits, hit);
+    device::Buffer& boff = scratch(kSuperOff, off);
+    device::Buffer& bdata = scratch(kSuperData, data);
+    device::Buffer& bnshadow = scratch(kNShadow, n * 4);
+    device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
+    count.arg(0, brays).arg(1, bhits).arg(2, un);
+    set_scene_args(count, 3);
+    count.arg(10, bnshadow).arg(11, bnspawn).arg(12, 1u).arg(13, boff).arg(14, bdata);
+    ctx.run(count, n);
+    std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
+    std::vector<std::uint32_t> counts = spawn_off;
+    std::uint32_t nspawn = prefix_sum(spawn_off);
+    std::vector<std::uint32_t> zeros(n, 0);
+    device::Buffer& bsoff = scratch(kShadowOff, zeros);
+    device::Buffer& bpoff = scratch(kSpawnOff, spawn_off);
+    device::Buffer& bshadows = scratch(kShadows, sizeof(rc_shadow));
+    device::Buffer& bspawned = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
+    device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
+    shade.arg(0, brays).arg(1, bhits).arg(2, un);
+    set_scene_args(shade, 3);
+    shade.arg(10, bsoff).arg(11, bpoff).arg(12, bshadows).arg(13, bspawned).arg(14, bimm);
+    shade.arg(15, 1u).arg(16, boff).arg(17, bdata);
+    ctx.run(shade, n);
+    std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
+    for (std::size_t i = 0; i < n; ++i)
+      tally.supersampled(req[i], children.data() + spawn_off[i], counts[i]);
+    next.insert(next.end(), children.begin(), children.end());
   }
 
   // Shades rays [a, b) of the wave: writes their shadow requests and children, tests the
@@ -319,6 +376,7 @@ struct Renderer::Impl {
     shade.arg(0, brays).arg(1, bhits).arg(2, un);
     set_scene_args(shade, 3);
     shade.arg(10, bsoff).arg(11, bpoff).arg(12, bshadows).arg(13, bspawned).arg(14, bimm);
+    shade.arg(15, 0u).arg(16, bsoff).arg(17, bsoff);
     ctx.run(shade, n);
 
     std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);
@@ -335,6 +393,15 @@ struct Renderer::Impl {
         .arg(6, btotal);
     ctx.run(accumulate, n);
     std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
+    std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
+    if (tree) {
+      for (std::size_t i = 0; i < n; ++i) {
+        std::size_t end = i + 1 < n ? spawn_off[i + 1] : nspawn;
+        tally.shaded(rays[i], hit[i], total[i], children.data() + spawn_off[i], end - spawn_off[i]);
+      }
+      next.insert(next.end(), children.begin(), children.end());
+      return;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       Vec3d& s = sums[rays[i].tally];
       s[0] += total[i].x;
@@ -347,7 +414,6 @@ struct Renderer::Impl {
         m[2] += total[i].z;
       }
     }
-    std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
     next.insert(next.end(), children.begin(), children.end());
   }
 

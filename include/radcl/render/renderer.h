@@ -31,6 +31,7 @@ struct RenderSettings {
   Vec3d av{0, 0, 0};
   int ab = 0;
   int ad = 1024; // -aa 0 hemisphere divisions
+  int as = 128;  // -as super-samples spread over a hemisphere's high-variance divisions
   // -ae/-ai/-aE/-aI: hits on surfaces whose modifier is excluded (or, with an include list, not
   // included) take -av instead of sampling.
   enum class AmbientList { None, Include, Exclude };

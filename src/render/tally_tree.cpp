@@ -1,0 +1,217 @@
+#include "radcl/render/tally_tree.h"
+
+#include <cmath>
+
+#include "radcl/rng.h"
+
+namespace radcl::render {
+
+namespace {
+
+double bright(const TallyTree::Vec3d& c) {
+  return 0.265074126 * c[0] + 0.670114631 * c[1] + 0.064811243 * c[2];
+}
+
+constexpr double kFtiny = 1e-6;
+
+} // namespace
+
+void TallyTree::reset(std::size_t primaries, std::uint32_t seed) {
+  nodes_.assign(primaries, Node{});
+  for (Node& n : nodes_)
+    n.pending = 1;
+  hemis_.clear();
+  requests_.clear();
+  seed_ = seed;
+}
+
+void TallyTree::add(std::uint32_t node, const rc_float4& c, bool mirrored) {
+  Node& n = nodes_[node];
+  n.sum[0] += c.x;
+  n.sum[1] += c.y;
+  n.sum[2] += c.z;
+  if (mirrored) {
+    n.msum[0] += c.x;
+    n.msum[1] += c.y;
+    n.msum[2] += c.z;
+  }
+}
+
+void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& total,
+                       rc_ray* children, std::size_t nchildren) {
+  add(ray.tally, total, ray.flags & RC_RAY_MIRRORED);
+  for (std::size_t k = 0; k < nchildren;) {
+    rc_ray& c = children[k];
+    if (!(c.cell & RC_CELL_FLAG)) {
+      ++nodes_[c.tally].pending;
+      ++k;
+      continue;
+    }
+    // A hemisphere's first samples are consecutive, division 0 first.
+    std::uint32_t which = RC_CELL_WHICH(c.cell);
+    std::size_t m = 0;
+    while (k + m < nchildren && (children[k + m].cell & RC_CELL_FLAG) &&
+           RC_CELL_WHICH(children[k + m].cell) == which && RC_CELL_INDEX(children[k + m].cell) == m)
+      ++m;
+    Hemi h;
+    h.ray = ray;
+    h.hit = hit;
+    h.which = which;
+    h.ns = static_cast<std::uint32_t>(std::lround(std::sqrt(static_cast<double>(m))));
+    h.budget = RC_CELL_BUDGET(c.cell);
+    const float pc[3] = {ray.coef.x, ray.coef.y, ray.coef.z};
+    const float cc[3] = {c.coef.x, c.coef.y, c.coef.z};
+    for (int i = 0; i < 3; ++i)
+      h.acoef[i] = pc[i] > 0 ? static_cast<double>(cc[i]) / pc[i] : 0.0;
+    h.node = static_cast<std::uint32_t>(nodes_.size());
+    h.first_cell = h.node + 1;
+    Node hn;
+    hn.parent = ray.tally;
+    hn.pending = static_cast<std::int64_t>(m);
+    hn.hemi = static_cast<std::uint32_t>(hemis_.size());
+    ++nodes_[ray.tally].pending;
+    nodes_.push_back(hn);
+    for (std::size_t j = 0; j < m; ++j) {
+      Node cn;
+      cn.parent = h.node;
+      cn.pending = 1;
+      nodes_.push_back(cn);
+      children[k + j].tally = h.first_cell + static_cast<std::uint32_t>(j);
+      children[k + j].cell = 0;
+    }
+    hemis_.push_back(h);
+    k += m;
+  }
+  --nodes_[ray.tally].pending;
+  settle(ray.tally);
+}
+
+void TallyTree::supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren) {
+  const Hemi& h = hemis_[r.hemi];
+  std::int64_t cells = 0;
+  std::uint32_t last = RC_NONE;
+  for (std::size_t k = 0; k < nchildren; ++k) {
+    std::uint32_t cell = h.first_cell + RC_CELL_INDEX(children[k].cell);
+    Node& n = nodes_[cell];
+    // Children come division by division; a division counts once towards the hemisphere.
+    if (cell != last) ++cells;
+    last = cell;
+    ++n.pending;
+    ++n.count;
+    children[k].tally = cell;
+    children[k].cell = 0;
+  }
+  // The placeholder that kept the hemisphere open while the samples were asked for.
+  nodes_[h.node].pending += cells - 1;
+  settle(h.node);
+}
+
+// Radiance's ambsupersamp: the budget spread over the divisions in proportion to the
+// differences of each division's brightness from its neighbours (getambdiffs).
+std::vector<std::uint32_t> TallyTree::allocate(const Hemi& h) const {
+  const std::uint32_t ns = h.ns;
+  std::vector<std::uint32_t> counts(std::size_t{ns} * ns, 0);
+  double ab = bright(h.acoef);
+  if (ab <= 0 || ns < 2) return counts;
+  const double normf = 1.0 / ab;
+  // Each division's value as Radiance holds it: without the shaded ray's own coefficient.
+  const float pc[3] = {h.ray.coef.x, h.ray.coef.y, h.ray.coef.z};
+  std::vector<double> b(counts.size());
+  for (std::size_t c = 0; c < b.size(); ++c) {
+    const Node& n = nodes_[h.first_cell + c];
+    Vec3d v;
+    for (int i = 0; i < 3; ++i)
+      v[i] = pc[i] > 0 ? n.sum[i] / n.count / pc[i] : 0.0;
+    b[c] = bright(v);
+  }
+  std::vector<double> e(b.size(), 0.0);
+  auto diff = [&](std::size_t a, std::size_t c) {
+    double s = b[a] + b[c];
+    if (s <= 0) return; // two black divisions agree (Radiance would divide 0 by 0 here)
+    double d = b[a] - b[c];
+    d *= d * normf / s;
+    e[a] += d;
+    e[c] += d;
+  };
+  for (std::uint32_t i = 0; i < ns; ++i)
+    for (std::uint32_t j = 0; j < ns; ++j) {
+      std::size_t a = std::size_t{i} * ns + j;
+      if (i) diff(a, a - ns);
+      if (j) diff(a, a - 1);
+      if (i && j) diff(a, a - ns - 1);
+    }
+  // Corners and edges have fewer neighbours.
+  auto scale = [&](std::size_t a, double f) { e[a] *= f; };
+  scale(0, 8. / 3.);
+  scale(ns - 1, 8. / 3.);
+  scale(std::size_t{ns - 1} * ns, 8. / 3.);
+  scale(std::size_t{ns - 1} * ns + ns - 1, 8. / 3.);
+  for (std::uint32_t i = 1; i + 1 < ns; ++i) {
+    scale(std::size_t{i} * ns, 8. / 5.);
+    scale(std::size_t{i} * ns + ns - 1, 8. / 5.);
+    scale(i, 8. / 5.);
+    scale(std::size_t{ns - 1} * ns + i, 8. / 5.);
+  }
+  double rem = 0;
+  for (std::size_t c = e.size(); c-- > 0;)
+    rem += e[c];
+  std::int64_t cnt = h.budget;
+  rc_rng_key key = rc_make_key(h.ray.primary, h.ray.sample ^ 0xA11C0CA7u, h.ray.depth, seed_);
+  for (std::size_t c = 0; c < e.size(); ++c) {
+    if (rem <= kFtiny) break;
+    double u = rc_random(key, h.which * 65536u + static_cast<std::uint32_t>(c));
+    auto nss = static_cast<std::int64_t>(e[c] / rem * static_cast<double>(cnt) + u);
+    if (nss > 0) {
+      std::int64_t take = std::min(nss, cnt);
+      counts[c] = static_cast<std::uint32_t>(take);
+      cnt -= take;
+      if (cnt == 0) break;
+    }
+    rem -= e[c];
+  }
+  return counts;
+}
+
+void TallyTree::settle(std::uint32_t id) {
+  for (;;) {
+    Node& n = nodes_[id];
+    if (n.pending != 0 || n.parent == RC_NONE) return; // waiting, or a finished primary
+    if (n.hemi == RC_NONE) { // a division: its hemisphere waits for one fewer
+      id = n.parent;
+      --nodes_[id].pending;
+      continue;
+    }
+    Hemi& h = hemis_[n.hemi];
+    if (!h.second) {
+      h.second = true;
+      std::vector<std::uint32_t> counts = allocate(h);
+      bool any = false;
+      for (std::uint32_t c : counts)
+        any = any || c > 0;
+      if (any) {
+        nodes_[id].pending = 1;
+        requests_.push_back(SuperRequest{n.hemi, h.ray, h.hit, h.which, std::move(counts)});
+        return;
+      }
+    }
+    // Resolved: the sum of the divisions' averages goes to the parent.
+    Vec3d v{}, mv{};
+    for (std::uint32_t c = 0; c < h.ns * h.ns; ++c) {
+      const Node& cell = nodes_[h.first_cell + c];
+      for (int i = 0; i < 3; ++i) {
+        v[i] += cell.sum[i] / cell.count;
+        mv[i] += cell.msum[i] / cell.count;
+      }
+    }
+    std::uint32_t parent = n.parent;
+    Node& p = nodes_[parent];
+    for (int i = 0; i < 3; ++i) {
+      p.sum[i] += v[i];
+      p.msum[i] += mv[i];
+    }
+    --p.pending;
+    id = parent;
+  }
+}
+
+} // namespace radcl::render
