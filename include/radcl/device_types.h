@@ -121,7 +121,11 @@ typedef struct rc_surface {
   rc_u32 source;   /* light-source index when the surface is a direct source, else RC_NONE */
   rc_u32 object;   /* the surface's object number (names for output) */
   rc_u32 flags;    /* RC_SURFF_* */
-  rc_u32 pad0, pad1, pad2;
+  rc_u32 clip;  /* antimatter: the bit of its direct modifier in the rays' clip sets, 0 if no
+                   antimatter lists it */
+  rc_u32 slots; /* antimatter: the rays' crossing counters (bit k: counter k) that a transmission
+                   through this surface changes */
+  rc_u32 pad2;
 } rc_surface;
 
 /* A material or other modifier; its real arguments live in a float buffer at [args, args+nargs). */
@@ -232,7 +236,7 @@ typedef struct rc_rng_key {
   F(rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim)               \
   F(rc_hit, source) F(rc_hit, front)                                                           \
   F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(rc_surface, object)      \
-  F(rc_surface, flags) F(rc_surface, pad2)                                                     \
+  F(rc_surface, flags) F(rc_surface, clip) F(rc_surface, slots) F(rc_surface, pad2)                                                     \
   F(rc_material, type) F(rc_material, args) F(rc_material, nargs) F(rc_material, alt)          \
   F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(rc_source, emit)    \
   F(rc_source, spot) F(rc_source, kind) F(rc_source, flags) F(rc_source, surface)              \

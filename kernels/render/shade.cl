@@ -79,6 +79,9 @@ typedef struct rc_out {
   global const uint* super;
   uint nhemi; /* hemispheres sampled so far by this ray */
   uint child; /* sample number of the next child (keys its random numbers) */
+  uint newclip;     /* antimatter: clip set of transmitted children (Radiance's newcset) */
+  uint slots;       /* antimatter: crossing counters a transmission through the hit changes */
+  int side;         /* and by how much: +1 through the front, -1 through the back */
 } rc_out;
 
 static inline void rc_out_init(rc_out* o, int write) {
@@ -90,6 +93,9 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->super = 0;
   o->nhemi = 0;
   o->child = 0;
+  o->newclip = 0u;
+  o->slots = 0u;
+  o->side = 0;
 }
 
 static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
@@ -155,8 +161,16 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     r.coef = (float4)(parent->coef.xyz * coef, weight);
     r.primary = parent->primary;
     r.tally = parent->tally;
+    /* Reflections (and shadow rays) keep the clip set of the surface point; transmissions take
+     * the one beyond it and count their crossing of listed surfaces. */
     r.clip = parent->clip;
     r.inside = parent->inside;
+#ifdef RADCL_HAS_ANTIMATTER
+    if (kind == RC_RAY_TRANSMITTED) {
+      r.clip = o->newclip;
+      r.inside = rc_inside_add(parent->inside, o->slots, o->side);
+    }
+#endif
     r.cell = 0;
     r.depth = depth;
     r.flags = kind | rc_crtype(parent->flags);
@@ -523,6 +537,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   uint kind = r.flags & RC_RAY_KIND_MASK;
   rc_rng_key key = rc_make_key(r.primary, r.sample, r.depth, P->seed);
   o->cext = rc_ray_medium(&r);
+  o->newclip = r.clip;
   if (h.surface == RC_NONE) return; /* nothing hit: black */
 
   if (h.surface == RC_SURF_IRRADIANCE) { /* -I measurement point */
@@ -531,12 +546,34 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
     return;
   }
   rc_surface surf = S->surfaces[h.surface];
-  if (surf.material == RC_NONE) { /* void modifier: Radiance does not see the surface */
+  int invisible = surf.material == RC_NONE; /* void modifier: Radiance does not see it */
+#ifdef RADCL_HAS_ANTIMATTER
+  o->slots = surf.slots;
+  o->side = h.front ? 1 : -1;
+  invisible |= (surf.clip & r.clip) != 0u; /* clipped by an antimatter the ray is inside */
+#endif
+  if (invisible) {
     rc_apply_medium(o, &r, o->cext, h.pos.w);
     if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
     return;
   }
   rc_material mat = S->materials[surf.material];
+#ifdef RADCL_HAS_ANTIMATTER
+  if (mat.type == RC_OBJ_ANTIMATTER) {
+    global const float* a = S->args + mat.args;
+    o->newclip = rc_antimatter_clip(a, r.clip, h.front);
+    if (h.pos.w < 0.0f) return;
+    if (!rc_antimatter_shades(&mat, a, r.inside)) {
+      rc_apply_medium(o, &r, o->cext, h.pos.w);
+      rc_pass(o, &r, &h, P, key);
+      return;
+    }
+    /* Leaving the removed part of a clipped object: the boundary is mod1's, facing the ray. */
+    mat = S->materials[mat.alt];
+    h.nrm = -h.nrm;
+    h.front = !h.front;
+  }
+#endif
 
   /* illum: a source for shadow rays aimed at it, otherwise its alternate material (or
    * nothing: the ray passes through). */
@@ -721,16 +758,37 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
     return (state & RC_SH_LATER) ? RC_SH_BLOCKED : RC_SH_REACHED;
   }
   float t = h->pos.w;
-  if (!distant && h->surface == src->surface) {
+  rc_surface surf = S->surfaces[h->surface];
+  int invisible = surf.material == RC_NONE;
+#ifdef RADCL_HAS_ANTIMATTER
+  /* Shadow rays see clipped surfaces and antimatter boundaries as other rays do; going on
+   * beyond the surface is a transmission, which updates their antimatter state. */
+  invisible |= (surf.clip & s->clip) != 0u;
+  uint next_clip = s->clip;
+  uint next_inside = rc_inside_add(s->inside, surf.slots, h->front ? 1 : -1);
+  rc_hit flipped = *h;
+#endif
+  if (!invisible && !distant && h->surface == src->surface) {
     s->contrib.xyz *= rc_ext(cext, t);
     return RC_SH_REACHED;
   }
-  rc_surface surf = S->surfaces[h->surface];
   float3 coef = (float3)(1.0f);
   float3 next_cext = cext;
   int pass = 1;
-  if (surf.material != RC_NONE) {
+  if (!invisible) {
     rc_material m = S->materials[surf.material];
+#ifdef RADCL_HAS_ANTIMATTER
+    if (m.type == RC_OBJ_ANTIMATTER) {
+      global const float* a = S->args + m.args;
+      next_clip = rc_antimatter_clip(a, s->clip, h->front);
+      if (rc_antimatter_shades(&m, a, s->inside)) { /* mod1's material, facing the ray */
+        m = S->materials[m.alt];
+        flipped.nrm = -flipped.nrm;
+        flipped.front = !flipped.front;
+        h = &flipped;
+      }
+    }
+#endif
     if (m.type == RC_OBJ_ILLUM) {
       /* An illum or glow source is not seen through the front of another illum. */
       if (src->surface != RC_NONE && (src->flags & (RC_SRCF_ILLUM | RC_SRCF_GLOW)) && h->front)
@@ -745,6 +803,10 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
     switch (m.type) {
     case RC_OBJ_ILLUM: /* without an alternate: invisible */
       break;
+#ifdef RADCL_HAS_ANTIMATTER
+    case RC_OBJ_ANTIMATTER: /* a boundary without mod1 here */
+      break;
+#endif
 #ifdef RADCL_HAS_TRANS
     case RC_OBJ_TRANS: {
       if (back_pass) break;
@@ -792,6 +854,10 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   s->dir = (float4)(d, distant ? s->dir.w : rest);
   s->contrib = (float4)(c, 0.0f);
   s->cext = (float4)(next_cext, 0.0f);
+#ifdef RADCL_HAS_ANTIMATTER
+  s->clip = next_clip;
+  s->inside = next_inside;
+#endif
   return (state & ~RC_SH_STATUS) | RC_SH_LATER | RC_SH_CONTINUE;
 }
 

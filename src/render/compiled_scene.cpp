@@ -24,11 +24,19 @@ bool supported_material(rc_object_type t) {
   case RC_OBJ_GLASS:
   case RC_OBJ_DIELECTRIC:
   case RC_OBJ_INTERFACE:
+  case RC_OBJ_ANTIMATTER:
     return true;
   default:
     return false;
   }
 }
+
+// Limits of the rays' antimatter state (rc_ray.clip and rc_ray.inside).
+constexpr std::size_t kMaxClipped = 32;
+constexpr std::size_t kMaxShadingAntimatter = 4;
+
+// A modifier object: its scene (instances and meshes have their own) and number there.
+using ModKey = std::pair<const scene::SceneDescription*, std::int32_t>;
 
 // The kernels read a fixed number of real arguments for these; Radiance refuses others.
 bool real_count_ok(rc_object_type t, std::size_t n) {
@@ -62,6 +70,7 @@ public:
         for (std::size_t i = 0; i < pl.scene->objects.size(); ++i)
           add_surface(pl, static_cast<std::int32_t>(i));
     }
+    assign_clip_bits();
     // -i/-I: plastic (pi, pi, pi) without specular reflects radiance equal to irradiance.
     out_.irradiance_material = static_cast<std::uint32_t>(out_.materials.size());
     const float pi = std::numbers::pi_v<float>;
@@ -85,6 +94,73 @@ private:
   bool shading_;
   CompiledScene out_;
   std::map<std::pair<const scene::SceneDescription*, std::int32_t>, std::uint32_t> ids_;
+  std::vector<ModKey> surface_mod_;          // direct modifier of each compiled surface
+  std::map<ModKey, std::uint32_t> clip_bit_; // clipped modifiers and their bit in rc_ray.clip
+  std::vector<std::uint32_t> slot_mask_;     // per crossing counter: its antimatter's list
+
+  std::uint32_t clip_bit(const ModKey& key) {
+    auto it = clip_bit_.find(key);
+    if (it != clip_bit_.end()) return it->second;
+    if (clip_bit_.size() == kMaxClipped)
+      throw FatalError("antimatter: more than " + std::to_string(kMaxClipped) +
+                       " clipped modifiers in the scene (radcl's limit)");
+    std::uint32_t bit = static_cast<std::uint32_t>(clip_bit_.size());
+    clip_bit_[key] = bit;
+    return bit;
+  }
+
+  // antimatter: its list as a bit mask (Radiance's m_clip() modifier set, with its warnings),
+  // mod1's material as the alternate and a crossing counter when mod1 shades.
+  std::uint32_t antimatter(const scene::SceneDescription& sd, std::int32_t obj) {
+    const scene::Object& o = sd.objects[obj];
+    std::string what = " for antimatter \"" + o.name + "\"";
+    if (o.sargs.empty()) throw FatalError("bad # arguments" + what);
+    std::uint32_t mask = 0;
+    for (const std::string& name : o.sargs) {
+      if (name == "void") continue;
+      std::int32_t mod = sd.last_modifier(obj, name);
+      if (mod == scene::kVoid) {
+        warning("unknown modifier \"" + name + "\"" + what);
+        continue;
+      }
+      std::uint32_t bit = 1u << clip_bit({&sd, mod});
+      if (mask & bit) {
+        warning("duplicate modifier" + what);
+        continue;
+      }
+      mask |= bit;
+    }
+    std::uint32_t alt = RC_NONE;
+    float slot = -1;
+    if (o.sargs[0] != "void") {
+      std::int32_t mod1 = sd.last_modifier(obj, o.sargs[0]);
+      if (mod1 != scene::kVoid) alt = material(sd, scene::first_material_from(sd, mod1));
+    }
+    if (alt != RC_NONE) {
+      if (slot_mask_.size() == kMaxShadingAntimatter)
+        throw FatalError("antimatter: more than " + std::to_string(kMaxShadingAntimatter) +
+                         " antimatter materials with a shading modifier (radcl's limit)");
+      slot = static_cast<float>(slot_mask_.size());
+      slot_mask_.push_back(mask);
+    }
+    out_.features.add(RC_OBJ_ANTIMATTER);
+    return push_material(RC_OBJ_ANTIMATTER,
+                         {static_cast<float>(mask & 0xFFFFu), static_cast<float>(mask >> 16), slot},
+                         alt);
+  }
+
+  // Every surface learns the bit of its direct modifier (if an antimatter lists it) and the
+  // crossing counters that count it, now that all antimatters are known.
+  void assign_clip_bits() {
+    for (std::size_t i = 0; i < out_.surfaces.size(); ++i) {
+      auto it = clip_bit_.find(surface_mod_[i]);
+      if (it == clip_bit_.end()) continue;
+      rc_surface& s = out_.surfaces[i];
+      s.clip = 1u << it->second;
+      for (std::size_t k = 0; k < slot_mask_.size(); ++k)
+        if (slot_mask_[k] & s.clip) s.slots |= 1u << k;
+    }
+  }
 
   std::uint32_t push_material(rc_object_type type, const std::vector<float>& args,
                               std::uint32_t alt) {
@@ -107,6 +183,11 @@ private:
     if (shading_ && !supported_material(o.type))
       throw FatalError("material type \"" + std::string(scene::type_name(o.type)) + "\" of \"" +
                        o.name + "\" is not supported yet");
+    if (shading_ && o.type == RC_OBJ_ANTIMATTER) {
+      std::uint32_t id = antimatter(sd, obj);
+      ids_[key] = id;
+      return id;
+    }
     if (!real_count_ok(o.type, o.fargs.size()))
       throw FatalError("bad number of real arguments for " + std::string(scene::type_name(o.type)) +
                        " \"" + o.name + "\"");
@@ -136,8 +217,10 @@ private:
     return s;
   }
 
-  void push_surface(rc_surface s, std::string name, std::string mod, std::string mat) {
+  void push_surface(rc_surface s, std::string name, std::string mod, std::string mat,
+                    ModKey direct = {nullptr, scene::kVoid}) {
     out_.surfaces.push_back(s);
+    surface_mod_.push_back(direct);
     out_.surface_names.push_back(std::move(name));
     out_.modifier_names.push_back(std::move(mod));
     out_.material_names.push_back(std::move(mat));
@@ -164,7 +247,7 @@ private:
     out_.features.add(o.type);
     std::int32_t mod = msd->objects[surf].modifier;
     push_surface(s, msd->objects[surf].name, mod == scene::kVoid ? "void" : msd->objects[mod].name,
-                 m == scene::kVoid ? "void" : msd->objects[m].name);
+                 m == scene::kVoid ? "void" : msd->objects[m].name, {msd, mod});
   }
 
   // One slot per modifier a mesh's faces may name (slot 0: faces without one).
@@ -175,19 +258,22 @@ private:
     for (std::int32_t i = -1; i < static_cast<std::int32_t>(mesh.materials.size()); ++i) {
       rc_surface s = new_surface(RC_OBJ_MESH, static_cast<std::uint32_t>(pl.instance_object));
       std::string mod = "void", mat = "void";
+      ModKey direct{nullptr, scene::kVoid};
       if (pl.shade_object >= 0) { // the mesh primitive's own modifier overrides its faces'
         std::int32_t m = scene::first_material(*pl.shade_scene, pl.shade_object);
         s.material = material(*pl.shade_scene, m);
         std::int32_t mo = pl.shade_scene->objects[pl.shade_object].modifier;
+        direct = {pl.shade_scene, mo};
         if (mo != scene::kVoid) mod = pl.shade_scene->objects[mo].name;
         if (m != scene::kVoid) mat = pl.shade_scene->objects[m].name;
       } else if (i >= 0) {
         std::int32_t m = scene::first_material_from(mesh.objects, i);
         s.material = material(mesh.objects, m);
         mod = mesh.materials[i];
+        direct = {&mesh.objects, i};
         if (m != scene::kVoid) mat = mesh.objects.objects[m].name;
       }
-      push_surface(s, prim.name, mod, mat);
+      push_surface(s, prim.name, mod, mat, direct);
     }
   }
 };
