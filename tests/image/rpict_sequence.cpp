@@ -188,6 +188,40 @@ TEST_F(RpictSequence, OctreeFromStandardInput) {
       << log;
 }
 
+// Every line but the command line and the dates.
+std::string without_dates(const std::string& pic) {
+  std::istringstream in(pic);
+  std::string l, out;
+  while (std::getline(in, l))
+    if (l.rfind("CAPDATE=", 0) && l.rfind("GMT=", 0) && l.find("rpict ") == std::string::npos)
+      out += l + "\n";
+  return out;
+}
+
+TEST_F(RpictSequence, PersistentServerRendersLaterSequences) {
+  std::string pf = (dir / "pfile").string(), log;
+  std::ofstream(dir / "one") << "VIEW= -vp 0.45 0.05 0.5\n";
+  ASSERT_EQ(rpict(kOpts + "-S 1 -P " + pf + " cornell.oct < " + (dir / "one").string() + " > " +
+                      (dir / "first.hdr").string(),
+                  &log),
+            0)
+      << log;
+  ASSERT_EQ(
+      rpict("-P " + pf + " < " + (dir / "views").string() + " > " + (dir / "attached.hdr").string(),
+            &log),
+      0)
+      << log;
+  ASSERT_EQ(rpict(kOpts + "-S 1 cornell.oct < " + (dir / "views").string() + " > " +
+                      (dir / "plain.hdr").string(),
+                  &log),
+            0)
+      << log;
+  std::string attached = slurp((dir / "attached.hdr").string());
+  EXPECT_NE(attached.find("FRAME=3\n"), std::string::npos);
+  EXPECT_EQ(without_dates(attached), without_dates(slurp((dir / "plain.hdr").string())));
+  fs::remove(pf); // ends the server
+}
+
 TEST_F(RpictSequence, PersistArgumentErrors) {
   std::string pf = (dir / "pfile").string(), log;
   EXPECT_NE(rpict(kOpts + "-P " + pf + " cornell.oct < /dev/null", &log), 0);
