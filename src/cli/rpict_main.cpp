@@ -1,7 +1,11 @@
 // rpict: renders a view of a scene to a picture with Radiance's options, header and sampling
 // (cli-rtrace-rpict.md §4, picture-format.md §6), written as it grows; other formats by
-// extension (.exr, .tif, .png).
+// extension (.exr, .tif, .png). -S renders a sequence of views read from standard input,
+// -P/-PP leave a persistent server behind (persist.h).
+#include <cctype>
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <fcntl.h>
 #include <filesystem>
@@ -9,11 +13,15 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <sys/stat.h>
 #include <tbb/global_control.h>
 #include <thread>
 #include <unistd.h>
 #include <vector>
 
+#include "fd_input.h"
+#include "frame_name.h"
+#include "persist.h"
 #include "progress.h"
 #include "radcl/device/context.h"
 #include "radcl/image/depth.h"
@@ -34,6 +42,15 @@ using namespace radcl;
 
 void quiet_warning(const std::string&) {}
 
+std::string read_stdin() {
+  std::string data;
+  char buf[65536];
+  ssize_t n;
+  while ((n = ::read(0, buf, sizeof buf)) > 0)
+    data.append(buf, static_cast<std::size_t>(n));
+  return data;
+}
+
 render::RenderSettings settings_from(const options::RenderOptions& r) {
   render::RenderSettings s = cli::render_settings(r);
   s.low_discrepancy = !r.uncorrelated; // rpict's -u-: pixels stratify each other
@@ -41,35 +58,22 @@ render::RenderSettings settings_from(const options::RenderOptions& r) {
 }
 
 // Where the picture goes: a Radiance picture streamed scanline by scanline (stdout or an .hdr
-// file), or another format written once the image is complete.
+// file opened by the caller), or another format written once the image is complete.
 class Output {
 public:
-  Output(const std::string& path, const image::PictureHeader& header, int w, int h,
-         const image::Salvage* recovered)
-      : path_(path), w_(w), h_(h) {
-    auto kind = path.empty() ? std::optional(image::ImageKind::radiance) : image::image_kind(path);
-    if (!kind) throw FatalError("unknown output picture type \"" + path + "\"");
-    streaming_ = *kind == image::ImageKind::radiance;
+  Output(std::ostream* stream, const std::string& path, const image::PictureHeader& header, int w,
+         int h, const image::Salvage* recovered)
+      : path_(path), w_(w), h_(h), os_(stream) {
+    streaming_ = stream != nullptr;
     if (streaming_) {
-      std::ostream* os = &std::cout;
-      if (!path.empty()) {
-        // Never overwrite: rpict opens its output exclusively.
-        int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);
-        if (fd < 0) throw FatalError("cannot open output file \"" + path + "\"");
-        ::close(fd);
-        file_ = std::make_unique<std::ofstream>(path, std::ios::binary | std::ios::trunc);
-        os = file_.get();
-      }
       writer_ =
-          std::make_unique<image::PictureWriter>(*os, header, image::Resolution::standard(w, h));
+          std::make_unique<image::PictureWriter>(*os_, header, image::Resolution::standard(w, h));
       if (recovered)
         for (int y = 0; y < recovered->complete; ++y)
           writer_->write_scanline(std::span<const image::Rgbe>(
               recovered->pixels.data() + static_cast<std::size_t>(y) * w, w));
       writer_->flush();
     } else {
-      if (std::filesystem::exists(path))
-        throw FatalError("cannot open output file \"" + path + "\"");
       image_.width = w;
       image_.height = h;
       image_.rgb.resize(static_cast<std::size_t>(w) * h);
@@ -96,7 +100,7 @@ public:
   void finish(const std::vector<float>* depth) {
     if (streaming_) {
       writer_->flush();
-      if (file_ && !file_->good()) throw FatalError("write error in render");
+      if (!os_->good()) throw FatalError("write error in render");
       return;
     }
     if (depth) image_.depth = *depth;
@@ -106,15 +110,227 @@ public:
 private:
   std::string path_;
   int w_, h_;
+  std::ostream* os_;
   bool streaming_ = true;
-  std::unique_ptr<std::ofstream> file_;
   std::unique_ptr<image::PictureWriter> writer_;
   image::FloatImage image_;
   image::ImageWriteOptions opts_;
 };
 
+bool is_integer(const std::string& s) {
+  std::size_t i = (!s.empty() && (s[0] == '-' || s[0] == '+')) ? 1 : 0;
+  if (i >= s.size()) return false;
+  for (; i < s.size(); ++i)
+    if (!std::isdigit(static_cast<unsigned char>(s[i]))) return false;
+  return true;
+}
+
+// The loaded scene and renderer, and how one run of rpict (one job in persistent mode) turns
+// its views into pictures (Radiance's rpict(): frames, recovery, never overwriting).
+class Pictures {
+public:
+  Pictures(const options::RpictCommand& cmd, const std::vector<std::string>& args,
+           const scene::LoadedScene& ls)
+      : cmd_(cmd), opt_(cmd.opt), args_(args), ls_(ls) {}
+
+  void prepare() {
+    settings_ = settings_from(opt_.render);
+    renderer_ = std::make_unique<render::Renderer>(ls_, settings_, device::default_context());
+  }
+
+  void run() {
+    view_ = opt_.view; // every job starts from the command line's view
+    have_last_ = false;
+    lines_ = std::make_unique<cli::FdInputBuf>(0);
+    in_ = std::make_unique<std::istream>(lines_.get());
+    common_written_ = false;
+    cli::Progress progress(args_[0], opt_.report_interval);
+    const std::string& pout = opt_.output_file;
+    int seq = opt_.sequence_start > 0 ? opt_.sequence_start : 0;
+    std::string recover = opt_.recover_file;
+    if (seq > 0 && !recover.empty() && is_integer(recover)) {
+      // Skip to the frame to recover; its file is the one to salvage.
+      int rn = std::atoi(recover.c_str());
+      if (rn < seq) throw FatalError("recover frame less than start frame");
+      if (pout.empty()) throw FatalError("missing output file specification");
+      for (; seq < rn; ++seq)
+        if (!next_view()) throw FatalError("unexpected EOF on view input");
+      (void)options::setup_view(view_);
+      recover = cli::frame_name(pout, seq);
+    }
+    if (!pout.empty() && !recover.empty()) {
+      // Recovering into the output file itself: move the old one aside first.
+      std::string name = cli::frame_name(pout, seq);
+      if (recover == name) {
+        std::filesystem::path p(name);
+        std::string tmpl = (p.parent_path() / "rfXXXXXX").string();
+        int fd = ::mkstemp(tmpl.data());
+        if (fd >= 0) ::close(fd);
+        if (fd < 0 || std::rename(name.c_str(), tmpl.c_str()) < 0) {
+          int e = errno;
+          if (fd >= 0) ::unlink(tmpl.c_str());
+          if (e != ENOENT) throw FatalError("cannot rename \"" + name + "\" to \"" + tmpl + "\"");
+          warning("new output file \"" + name + "\"");
+          recover.clear();
+        } else {
+          recover = tmpl;
+        }
+      }
+    }
+    int npicts = 0;
+    do {
+      if (seq && !next_view()) break;
+      std::unique_ptr<std::ofstream> file;
+      std::string name;
+      bool radiance = true;
+      if (!pout.empty()) {
+        name = cli::frame_name(pout, seq);
+        auto kind = image::image_kind(name);
+        if (!kind) throw FatalError("unknown output picture type \"" + name + "\"");
+        radiance = *kind == image::ImageKind::radiance;
+        // Exclusive open: an existing frame is never overwritten, only skipped.
+        int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);
+        if (fd < 0) {
+          if (errno != EEXIST || !recover.empty() || name == pout)
+            throw FatalError("cannot open output file \"" + name + "\"");
+          (void)options::setup_view(view_);
+          continue;
+        }
+        ::close(fd);
+        if (radiance)
+          file = std::make_unique<std::ofstream>(name, std::ios::binary | std::ios::trunc);
+      }
+      render_frame(seq, file ? file.get() : (pout.empty() ? &std::cout : nullptr), name, radiance,
+                   recover, progress);
+      recover.clear();
+      ++npicts;
+    } while (seq++);
+    if (npicts == 0) warning("no output produced");
+  }
+
+private:
+  const options::RpictCommand& cmd_;
+  const options::RpictOptions& opt_;
+  const std::vector<std::string>& args_;
+  const scene::LoadedScene& ls_;
+  render::RenderSettings settings_;
+  std::unique_ptr<render::Renderer> renderer_;
+  options::View view_, last_;
+  bool have_last_ = false;
+  std::unique_ptr<cli::FdInputBuf> lines_;
+  std::unique_ptr<std::istream> in_;
+  bool common_written_ = false;
+
+  // Radiance's nextview(): the next view line of standard input changes the current view (the
+  // one before it becomes the previous view, for -pm). False at the end of the input.
+  bool next_view() {
+    last_ = view_;
+    have_last_ = true;
+    std::string line;
+    while (std::getline(*in_, line)) {
+      // rpict reads lines of at most 255 characters; the rest of a longer one is another.
+      for (std::size_t at = 0; at < std::max<std::size_t>(line.size(), 1); at += 255) {
+        std::string part = line.substr(at, 255);
+        if (options::is_view_line(part, args_[0]) && options::scan_view_line(view_, part) > 0)
+          return true;
+      }
+    }
+    return false;
+  }
+
+  image::PictureHeader header(int seq, double pa, bool common) const {
+    image::PictureHeader h;
+    if (common) {
+      for (const std::string& l : ls_.main.header)
+        h.lines.push_back(l);
+      if (ls_.main.header.empty()) h.add_id();
+      h.add_command(std::vector<std::string>(args_.begin(), args_.begin() + cmd_.operand));
+      h.add_software(std::string("radcl ") + RADCL_VERSION);
+    }
+    if (seq) h.add_frame(seq);
+    h.add_view(options::format_view(view_));
+    if (pa < 0.99 || pa > 1.01) h.add_pixaspect(pa);
+    h.add_dates(std::time(nullptr));
+    h.add_primaries();
+    h.add_format();
+    return h;
+  }
+
+  void render_frame(int seq, std::ostream* os, const std::string& name, bool radiance,
+                    const std::string& recover, cli::Progress& progress) {
+    // Resolution after the view's aspect (and, when recovering, the old picture's size).
+    int xres = opt_.xres, yres = opt_.yres;
+    double pa = opt_.pixel_aspect;
+    std::unique_ptr<image::Salvage> old;
+    if (!recover.empty()) {
+      old = std::make_unique<image::Salvage>(image::salvage_picture(recover));
+      for (const std::string& v : old->header.views())
+        options::scan_view_line(view_, v);
+      xres = old->resolution.scanline_length();
+      yres = old->resolution.num_scanlines();
+      pa = 0;
+    }
+    std::string err = options::setup_view(view_);
+    if (!err.empty()) throw FatalError(err);
+    pa = image::normalize_aspect(image::view_aspect(view_), xres, yres, pa);
+    if (seq && opt_.report_interval > 0) {
+      std::fprintf(stderr, "FRAME %d:%s\n", seq, options::format_view(view_).c_str());
+      std::fflush(stderr);
+    }
+    // On standard output a sequence's frames share the first one's leading lines.
+    const bool common = os != &std::cout || !common_written_;
+    if (os == &std::cout) common_written_ = true;
+
+    if (xres <= 0 || yres <= 0) warning("empty output picture");
+    Output out(radiance ? os : nullptr, name, header(seq, pa, common), xres, yres, old.get());
+    std::unique_ptr<image::DepthWriter> zout;
+    std::vector<float> depth;
+    // A non-Radiance output gets the depth as a channel too (EXR's Z).
+    bool keep_depth = !opt_.z_file.empty() && !radiance;
+    if (!opt_.z_file.empty())
+      zout = std::make_unique<image::DepthWriter>(cli::frame_name(opt_.z_file, seq), xres,
+                                                  old ? old->complete : 0);
+
+    render::PictureSettings ps;
+    ps.xres = xres;
+    ps.yres = yres;
+    ps.ps = opt_.pixel_sample;
+    ps.pt = opt_.pixel_threshold;
+    ps.pj = opt_.pixel_jitter;
+    ps.pd = opt_.pixel_aperture;
+    ps.seed = settings_.seed;
+    ps.first_row = old ? old->complete : 0;
+    options::View last = last_;
+    if (have_last_ && opt_.pixel_motion > 1e-6 && options::setup_view(last).empty()) {
+      ps.pm = opt_.pixel_motion;
+      ps.previous = &last;
+    }
+
+    progress.update(static_cast<double>(ps.first_row) / std::max(1, yres),
+                    renderer_->stats().total(), true);
+    if (xres > 0 && yres > 0)
+      render::render_picture(*renderer_, view_, ps, [&](const render::PictureRows& rows) {
+        out.rows(rows, zout.get());
+        if (keep_depth) depth.insert(depth.end(), rows.depth.begin(), rows.depth.end());
+        progress.update(static_cast<double>(rows.first + rows.count) / yres,
+                        renderer_->stats().total());
+      });
+    if (zout) zout->close();
+    out.finish(keep_depth ? &depth : nullptr);
+    progress.finish(renderer_->stats().total());
+    if (old) std::filesystem::remove(recover);
+  }
+};
+
 int rpict_main(int argc, char** argv) {
   std::vector<std::string> args(argv, argv + argc);
+  const bool server = cli::is_persist_server();
+  const std::string pfile = cli::find_persist_file(args, nullptr);
+  // A control file that exists already: attach to its server, as Radiance does on reading the
+  // option (later invocations need no other arguments).
+  struct stat pst;
+  if (!server && !pfile.empty() && ::stat(pfile.c_str(), &pst) == 0)
+    return cli::attach_persist(pfile, args[0]);
   options::RpictCommand cmd = options::parse_rpict_command_line(args, scene::find_on_raypath);
   options::RpictOptions& opt = cmd.opt;
   if (cmd.action == options::ParsedCommand::Action::PrintDefaults) {
@@ -129,86 +345,41 @@ int rpict_main(int argc, char** argv) {
     throw FatalError("cannot open error file \"" + opt.error_file + "\"");
   if (!opt.warnings) set_warning_sink(quiet_warning);
   std::string octree = options::rpict_octree(cmd);
-  // Refuse what would silently differ from Radiance.
-  if (octree.empty()) throw FatalError("reading the octree from standard input is not supported");
-  if (opt.sequence_start > 0) throw FatalError("sequence mode (-S) is not supported yet");
-  if (opt.persist != options::RtraceOptions::Persist::None)
-    throw FatalError("persistent mode (-P/-PP) is not supported yet");
-  if (opt.pixel_motion > 0) warning("-pm needs a view sequence (-S): no motion blur");
+  const bool persist = opt.persist != options::RtraceOptions::Persist::None;
+  if (persist) {
+    if (!opt.recover_file.empty()) throw FatalError("persist option used with recover file");
+    if (opt.sequence_start <= 0) throw FatalError("persist option only for sequences");
+  }
+  if (opt.pixel_motion > 0 && opt.sequence_start <= 0)
+    warning("-pm needs a view sequence (-S): no motion blur");
   // Radiance averages -av with the cache's values only (ambient.c's avsum): with -aa 0 -aw
   // changes nothing there either.
   if (opt.render.ambient_value_weight > 0 && opt.render.ambient_accuracy > 0)
     warning("-aw needs the irradiance cache's values: the ambient value is used as given");
   if (opt.render.ambient_accuracy > 0 && opt.render.ambient_bounces > 0)
     warning("irradiance cache not available yet: ambient computed without it (as -aa 0)");
-
-  // Resolution after the view's aspect (and, when recovering, the old picture's size).
-  int xres = opt.xres, yres = opt.yres;
-  double pa = opt.pixel_aspect;
-  std::unique_ptr<image::Salvage> old;
-  if (!opt.recover_file.empty()) {
-    old = std::make_unique<image::Salvage>(image::salvage_picture(opt.recover_file));
-    for (const std::string& v : old->header.views())
-      options::scan_view_line(opt.view, v);
-    std::string err = options::setup_view(opt.view);
-    if (!err.empty()) throw FatalError(err);
-    xres = old->resolution.scanline_length();
-    yres = old->resolution.num_scanlines();
-    pa = 0;
-  }
-  pa = image::normalize_aspect(image::view_aspect(opt.view), xres, yres, pa);
+  if (persist && !server && !cli::create_persist_file(opt.persist_file))
+    return cli::attach_persist(opt.persist_file, args[0]); // another one was quicker
 
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               std::max<std::size_t>(1, std::thread::hardware_concurrency()));
-  scene::LoadedScene ls = scene::load_scene({octree});
-  const render::RenderSettings settings = settings_from(opt.render);
-  render::Renderer renderer(ls, settings, device::default_context());
-
-  image::PictureHeader header;
-  for (const std::string& l : ls.main.header)
-    header.lines.push_back(l);
-  if (ls.main.header.empty()) header.add_id();
-  header.add_command(std::vector<std::string>(args.begin(), args.begin() + cmd.operand));
-  header.add_software(std::string("radcl ") + RADCL_VERSION);
-  header.add_view(options::format_view(opt.view));
-  if (pa < 0.99 || pa > 1.01) header.add_pixaspect(pa);
-  header.add_dates(std::time(nullptr));
-  header.add_primaries();
-  header.add_format();
-
-  if (xres <= 0 || yres <= 0) warning("empty output picture");
-  Output out(opt.output_file, header, xres, yres, old.get());
-  std::unique_ptr<image::DepthWriter> zout;
-  std::vector<float> depth;
-  // A non-Radiance output gets the depth as a channel too (EXR's Z).
-  bool keep_depth = !opt.z_file.empty() && !opt.output_file.empty() &&
-                    image::image_kind(opt.output_file) != image::ImageKind::radiance;
-  if (!opt.z_file.empty())
-    zout = std::make_unique<image::DepthWriter>(opt.z_file, xres, old ? old->complete : 0);
-
-  render::PictureSettings ps;
-  ps.xres = xres;
-  ps.yres = yres;
-  ps.ps = opt.pixel_sample;
-  ps.pt = opt.pixel_threshold;
-  ps.pj = opt.pixel_jitter;
-  ps.pd = opt.pixel_aperture;
-  ps.seed = settings.seed;
-  ps.first_row = old ? old->complete : 0;
-
-  cli::Progress progress(args[0], opt.report_interval);
-  progress.update(static_cast<double>(ps.first_row) / std::max(1, yres), 0, true);
-  if (xres > 0 && yres > 0)
-    render::render_picture(renderer, opt.view, ps, [&](const render::PictureRows& rows) {
-      out.rows(rows, zout.get());
-      if (keep_depth) depth.insert(depth.end(), rows.depth.begin(), rows.depth.end());
-      progress.update(static_cast<double>(rows.first + rows.count) / yres,
-                      renderer.stats().total());
-    });
-  if (zout) zout->close();
-  out.finish(keep_depth ? &depth : nullptr);
-  progress.finish(renderer.stats().total());
-  if (old) std::filesystem::remove(opt.recover_file);
+  // No octree argument: the octree comes on standard input (never with -S, whose views do).
+  scene::LoadedScene ls = octree.empty() ? scene::load_octree_data(read_stdin(), "standard input")
+                                         : scene::load_scene({octree});
+  Pictures pictures(cmd, args, ls);
+  cli::PersistJobs jobs;
+  jobs.prepare = [&] { pictures.prepare(); };
+  jobs.serve = [&] { pictures.run(); };
+  jobs.keep_stderr = !opt.error_file.empty();
+  if (server)
+    return cli::run_persist_server(opt.persist_file, args[0],
+                                   opt.persist == options::RtraceOptions::Persist::Parallel
+                                       ? cli::PersistMode::Parallel
+                                       : cli::PersistMode::Single,
+                                   jobs);
+  jobs.prepare();
+  jobs.serve();
+  if (persist) cli::start_persist_server(args); // leaves the scene loaded for later runs
   return 0;
 }
 

@@ -10,11 +10,13 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <sys/stat.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 #include <vector>
 
 #include "fd_input.h"
+#include "persist.h"
 #include "radcl/device/context.h"
 #include "radcl/geometry/scene_geometry.h"
 #include "radcl/options/ray_io.h"
@@ -88,6 +90,7 @@ public:
 
   // Reads, traces and writes until the input ends or the -x/-y count is reached.
   void run(std::istream& in, cli::FdInputBuf& buf) {
+    flow_ = options::RayFlow(opt_.xres, opt_.yres); // each persistent job starts afresh
     options::RayReader reader(in, opt_.in_format);
     std::vector<PendingRay> batch;
     bool done = false;
@@ -241,6 +244,14 @@ private:
 
 int rtrace_main(int argc, char** argv) {
   std::vector<std::string> args(argv, argv + argc);
+  const bool server = cli::is_persist_server();
+  cli::PersistMode pmode = cli::PersistMode::Single;
+  const std::string pfile = cli::find_persist_file(args, &pmode);
+  // A control file that exists already: attach to its server, as Radiance does on reading the
+  // option (later invocations need no other arguments).
+  struct stat pst;
+  if (!server && !pfile.empty() && ::stat(pfile.c_str(), &pst) == 0)
+    return cli::attach_persist(pfile, args[0]);
   options::RtraceCommand cmd = options::parse_rtrace_command_line(args, scene::find_on_raypath);
   if (cmd.action == options::ParsedCommand::Action::PrintDefaults) {
     std::fputs(options::format_rtrace_defaults(cmd.opt).c_str(), stdout);
@@ -265,8 +276,6 @@ int rtrace_main(int argc, char** argv) {
 
   // Refuse what would silently give other answers than Radiance's.
   if (spec.trace_mode()) throw FatalError("trace output (-ot/-oT) is not supported yet");
-  if (cmd.opt.persist != options::RtraceOptions::Persist::None)
-    throw FatalError("persistent mode (-P/-PP) is not supported yet");
   if (!cmd.opt.render.photon_maps.empty()) throw FatalError("photon maps (-ap) are not supported");
   // Radiance averages -av with the cache's values only (ambient.c's avsum): with -aa 0 -aw
   // changes nothing there either.
@@ -274,29 +283,48 @@ int rtrace_main(int argc, char** argv) {
     warning("-aw needs the irradiance cache's values: the ambient value is used as given");
   if (cmd.opt.render.ambient_accuracy > 0 && cmd.opt.render.ambient_bounces > 0)
     warning("irradiance cache not available yet: ambient computed without it (as -aa 0)");
+  const bool persist = cmd.opt.persist != options::RtraceOptions::Persist::None;
+  if (persist && !server && !cli::create_persist_file(cmd.opt.persist_file))
+    return cli::attach_persist(cmd.opt.persist_file, args[0]); // another one was quicker
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(std::max(1, cmd.opt.nproc)));
   scene::LoadedScene ls = scene::load_scene(inputs);
-  // Ray casting needs no OpenCL device at all.
-  device::Context* ctx = spec.cast_only ? nullptr : &device::default_context();
-  Tracer tracer(cmd, ls, ctx);
-
-  if (cmd.opt.header) {
-    options::RtraceHeader h;
-    h.octree_lines = ls.main.header;
-    h.command.assign(cmd.args.begin(), cmd.args.begin() + static_cast<long>(cmd.operand));
-    h.software = std::string("radcl ") + RADCL_VERSION;
-    h.time = std::time(nullptr);
-    h.ncomp = spec.ncomp;
-    h.out_format = cmd.opt.out_format;
-    std::fputs(options::format_rtrace_header(h).c_str(), stdout);
-    if (cmd.opt.xres > 0 && cmd.opt.yres > 0)
-      std::fputs(options::format_resolution(cmd.opt.xres, cmd.opt.yres).c_str(), stdout);
-  }
-  std::fflush(stdout);
-  cli::FdInputBuf buf(0);
-  std::istream in(&buf);
-  tracer.run(in, buf);
+  std::unique_ptr<Tracer> tracer;
+  cli::PersistJobs jobs;
+  jobs.prepare = [&] {
+    // Ray casting needs no OpenCL device at all.
+    device::Context* ctx = spec.cast_only ? nullptr : &device::default_context();
+    tracer = std::make_unique<Tracer>(cmd, ls, ctx);
+  };
+  // One run over standard input: what each persistent job repeats.
+  jobs.serve = [&] {
+    if (cmd.opt.header) {
+      options::RtraceHeader h;
+      h.octree_lines = ls.main.header;
+      h.command.assign(cmd.args.begin(), cmd.args.begin() + static_cast<long>(cmd.operand));
+      h.software = std::string("radcl ") + RADCL_VERSION;
+      h.time = std::time(nullptr);
+      h.ncomp = spec.ncomp;
+      h.out_format = cmd.opt.out_format;
+      std::fputs(options::format_rtrace_header(h).c_str(), stdout);
+      if (cmd.opt.xres > 0 && cmd.opt.yres > 0)
+        std::fputs(options::format_resolution(cmd.opt.xres, cmd.opt.yres).c_str(), stdout);
+    }
+    std::fflush(stdout);
+    cli::FdInputBuf buf(0);
+    std::istream in(&buf);
+    tracer->run(in, buf);
+  };
+  jobs.keep_stderr = !cmd.opt.error_file.empty();
+  if (server)
+    return cli::run_persist_server(cmd.opt.persist_file, args[0],
+                                   cmd.opt.persist == options::RtraceOptions::Persist::Parallel
+                                       ? cli::PersistMode::Parallel
+                                       : cli::PersistMode::Single,
+                                   jobs);
+  jobs.prepare();
+  jobs.serve();
+  if (persist) cli::start_persist_server(args); // leaves the scene loaded for later runs
   return 0;
 }
 

@@ -112,6 +112,27 @@ private:
       r.dir[k] = nd[k] / l;
   }
 
+  // -pm: rpict's blend of this sample's ray with the previous view's ray through the same
+  // image point, by a fraction in [-pm/2, pm/2]. False when the blend leaves no direction.
+  bool motion(image::ViewRay& r, double h, double v, rc_rng_key key) const {
+    if (!st_.previous || st_.pm <= 1e-6) return true;
+    std::optional<image::ViewRay> last = image::view_ray(*st_.previous, h, v);
+    if (!last) return true;
+    double d = st_.pm * (0.5 - rc_random(key, 6));
+    r.maxlen = (1 - d) * r.maxlen + d * last->maxlen;
+    double len = 0;
+    for (int k = 0; k < 3; ++k) {
+      r.org[k] = (1 - d) * r.org[k] + d * last->org[k];
+      r.dir[k] = (1 - d) * r.dir[k] + d * last->dir[k];
+      len += r.dir[k] * r.dir[k];
+    }
+    len = std::sqrt(len);
+    if (len == 0) return false;
+    for (double& c : r.dir)
+      c /= len;
+    return true;
+  }
+
   // Pixel jitter, stratified over each 8 x 8 tile of pixels: the tile's 64 jitter offsets
   // form a multi-jittered set (one in each 1/8 x 1/8 cell of the pixel square, and one in
   // each 1/64 column and row), dealt to the pixels in an order scrambled per tile. Like
@@ -160,7 +181,7 @@ private:
         double h = (x + 0.5 + st_.pj * (0.5 - ux)) / st_.xres;
         double v = (j + 0.5 + st_.pj * (0.5 - uy)) / st_.yres;
         std::optional<image::ViewRay> vr = image::view_ray(view_, h, v);
-        if (!vr) continue;
+        if (!vr || !motion(*vr, h, v, key)) continue;
         if (st_.pd > 0) aperture(*vr, key);
         rays.push_back({vr->org, vr->dir, vr->maxlen, id});
         which.push_back(static_cast<std::size_t>(y) * st_.xres + x);
@@ -242,7 +263,7 @@ private:
       Sample& s = at(x, y);
       s.done = true;
       s.traced = true;
-      if (!vr) { // outside a fisheye: black at distance 0
+      if (!vr || !motion(*vr, h, v, key)) { // outside a fisheye: black at distance 0
         s.v = {0, 0, 0};
         s.z = 0;
         continue;

@@ -112,4 +112,12 @@ LoadedScene load_scene(const std::vector<std::string>& inputs) {
   return result;
 }
 
+LoadedScene load_octree_data(std::string bytes, const std::string& name) {
+  LoadedScene result;
+  Loader loader(result);
+  result.main = read_octree_data(std::move(bytes), name);
+  loader.resolve(result.main);
+  return result;
+}
+
 } // namespace radcl::scene

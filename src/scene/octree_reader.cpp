@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "radcl/scene/object_type.h"
@@ -115,7 +116,11 @@ bool read_binary_scene(ByteReader& in, int objsize, SceneDescription& scene) {
 }
 
 SceneDescription read_octree(const std::string& path) {
-  ByteReader in(read_input_bytes(path, "octree file"), path, "truncated octree");
+  return read_octree_data(read_input_bytes(path, "octree file"), path);
+}
+
+SceneDescription read_octree_data(std::string bytes, const std::string& path) {
+  ByteReader in(std::move(bytes), path, "truncated octree");
   SceneDescription scene;
 
   auto header = read_info_header(in);

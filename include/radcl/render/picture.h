@@ -20,6 +20,10 @@ struct PictureSettings {
   double pt = 0.05;           // -pt relative difference that forces a sample
   double pj = 0.67;           // -pj pixel jitter
   double pd = 0;              // -pd aperture diameter (depth of field, focus at -vd's length)
+  // -pm motion blur: with the previous frame's view, each sample's ray is blended towards the
+  // ray through the same image point of that view by pm * (0.5 - random), as rpict does.
+  double pm = 0;
+  const options::View* previous = nullptr; // set up (setup_view); none outside sequences
   std::uint32_t seed = 0;
   int first_row = 0; // rows (from the top) already done, for -r recovery
 };

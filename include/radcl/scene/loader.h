@@ -24,4 +24,8 @@ struct LoadedScene {
 // instances is a fatal error.
 LoadedScene load_scene(const std::vector<std::string>& inputs);
 
+// An octree given as bytes (rpict with no octree argument reads it from standard input), with
+// the instances and meshes it references. `name` labels error messages.
+LoadedScene load_octree_data(std::string bytes, const std::string& name);
+
 } // namespace radcl::scene

@@ -14,6 +14,10 @@ namespace radcl::scene {
 // A path starting with '!' is a command whose output is the octree.
 SceneDescription read_octree(const std::string& path);
 
+// The same for an octree already in memory (rpict reading it from standard input); `name`
+// labels error messages.
+SceneDescription read_octree_data(std::string bytes, const std::string& name);
+
 class ByteReader;
 
 // Decodes Radiance's binary scene section (frozen octrees, mesh materials): the type-name
