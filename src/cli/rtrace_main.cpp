@@ -1,5 +1,6 @@
 // rtrace: traces rays read from standard input through a scene and writes what -o asks for,
 // with Radiance's options, formats, header and flushing rules (cli-rtrace-rpict.md §3).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -38,6 +39,10 @@ void quiet_warning(const std::string&) {}
 render::RenderSettings settings_from(const options::RtraceOptions& o) {
   render::RenderSettings s = cli::render_settings(o.render);
   s.irradiance_I = o.immediate_irradiance;
+  options::OutputSpec spec = options::parse_output_spec(o.output_spec);
+  if (spec.trace_mode())
+    s.trace = spec.trace_sources ? render::RenderSettings::Trace::RaysAndShadows
+                                 : render::RenderSettings::Trace::Rays;
   return s;
 }
 
@@ -223,8 +228,16 @@ private:
       rc_object_type mt = m < cs.materials.size()
                               ? static_cast<rc_object_type>(cs.materials[m].type)
                               : RC_OBJ_PLASTIC;
-      if (mt == RC_OBJ_GLASS || (flat && (mt == RC_OBJ_DIELECTRIC || mt == RC_OBJ_INTERFACE)))
-        o.unmirrored_length = o.effective_length = r.t + r.through_t;
+      bool through =
+          mt == RC_OBJ_GLASS || (flat && (mt == RC_OBJ_DIELECTRIC || mt == RC_OBJ_INTERFACE));
+      // trans: when its pure specular transmission outweighs the diffuse parts (m_normal).
+      if (mt == RC_OBJ_TRANS && cs.materials[m].nargs >= 7) {
+        const float* a = cs.args.data() + cs.materials[m].args;
+        double rspec = a[3], trans = a[5] * (1.0 - rspec), tspec = trans * a[6];
+        double tdiff = trans - tspec, rdiff = 1.0 - trans - rspec;
+        through = a[4] <= 1e-6 && tspec > tdiff + rdiff;
+      }
+      if (through) o.unmirrored_length = o.effective_length = r.t + r.through_t;
     }
     if (r.hit && r.mirror_t >= 0) {
       // A flat mirror's image lies behind it (the reflected ray's length adds); a curved one's
@@ -237,8 +250,56 @@ private:
     }
     o.derive_unmirrored();
     out_.clear();
-    options::append_record(out_, spec_.per_ray, o, opt_.out_format);
+    write_traced(r);
+    // Radiance writes nothing (not even a newline) when no letter precedes t/T.
+    if (!spec_.per_ray.empty()) options::append_record(out_, spec_.per_ray, o, opt_.out_format);
     std::fwrite(out_.data(), 1, out_.size(), stdout);
+  }
+
+  // Trace mode: every ray of the primary's tree, children before their parent, each indented
+  // by its number of ancestors; -te/-ti filter by the modifier of the surface hit.
+  void write_traced(const render::PrimaryResult& r) {
+    if (!spec_.trace_mode()) return;
+    const render::CompiledScene& cs = renderer_->compiled();
+    const options::ModifierList& list = opt_.trace_list;
+    for (const render::TracedRay& t : r.traced) {
+      bool named = t.surface < cs.surfaces.size();
+      if (list.kind != options::ModifierList::Kind::None) {
+        if (!named) {
+          if (list.kind == options::ModifierList::Kind::Include) continue;
+        } else {
+          const std::string& mod = cs.modifier_names[t.surface];
+          bool listed = std::find(list.names.begin(), list.names.end(), mod) != list.names.end();
+          if (listed != (list.kind == options::ModifierList::Kind::Include)) continue;
+        }
+      }
+      options::RayOutput o;
+      o.origin = t.org;
+      o.direction = t.dir;
+      o.value = t.value;
+      o.contribution = t.contribution;
+      o.coefficient = t.coef;
+      o.weight = t.weight;
+      o.point = t.org;
+      if (t.hit) {
+        o.first_length = o.effective_length = o.unmirrored_length = t.t;
+        o.point = t.point;
+        o.unperturbed_normal = t.normal;
+        double dn = t.normal[0] * t.dir[0] + t.normal[1] * t.dir[1] + t.normal[2] * t.dir[2];
+        for (int i = 0; i < 3; ++i)
+          o.normal[i] = dn > 0 ? -t.normal[i] : t.normal[i];
+      } else if (named) { // a distant source faces the ray
+        for (int i = 0; i < 3; ++i)
+          o.normal[i] = o.unperturbed_normal[i] = -t.dir[i];
+      }
+      if (named) {
+        o.surface = cs.surface_names[t.surface];
+        o.modifier = cs.modifier_names[t.surface];
+        o.material = cs.material_names[t.surface];
+      }
+      o.derive_unmirrored();
+      options::append_record(out_, spec_.per_traced, o, opt_.out_format, t.depth);
+    }
   }
 };
 
@@ -275,7 +336,7 @@ int rtrace_main(int argc, char** argv) {
                              cmd.opt.immediate_irradiance);
 
   // Refuse what would silently give other answers than Radiance's.
-  if (spec.trace_mode()) throw FatalError("trace output (-ot/-oT) is not supported yet");
+  if (spec.trace_mode()) cmd.opt.nproc = 1; // as Radiance: trace mode runs one process
   if (!cmd.opt.render.photon_maps.empty()) throw FatalError("photon maps (-ap) are not supported");
   // Radiance averages -av with the cache's values only (ambient.c's avsum): with -aa 0 -aw
   // changes nothing there either.

@@ -120,8 +120,9 @@ struct Renderer::Impl {
     p.nsources = static_cast<std::uint32_t>(cs.sources.sources.size());
     p.irradiance_material = cs.irradiance_material;
     p.ad = static_cast<std::uint32_t>(std::max(0, st.ad));
-    tree = st.as > 0 && st.ab > 0 && st.ad > 0;
-    p.as = tree ? static_cast<std::uint32_t>(st.as) : 0u;
+    bool super = st.as > 0 && st.ab > 0 && st.ad > 0;
+    tree = super || st.trace != RenderSettings::Trace::Off;
+    p.as = super ? static_cast<std::uint32_t>(st.as) : 0u;
     params.write(&p, sizeof p);
     upload_sources();
     add_virtual_sources(
@@ -226,7 +227,7 @@ struct Renderer::Impl {
     std::vector<Vec3d> mirror_sums(prim.size(), Vec3d{0, 0, 0});
     mirrored = &mirror_sums;
     results = res;
-    if (tree) tally.reset(prim.size(), settings.seed);
+    if (tree) tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
     for (std::size_t i = 0; i < prim.size(); ++i) {
       Vec3d d = unit(prim[i].dir);
       Vec3d o = prim[i].org;
@@ -300,7 +301,74 @@ struct Renderer::Impl {
     for (std::size_t i = 0; i < prim.size(); ++i) {
       res[i].value = tree ? tally.sum(i) : sums[i];
       res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
+      if (settings.trace != RenderSettings::Trace::Off) res[i].traced = traced(i);
     }
+  }
+
+  // Trace mode: the primary's tree as rtrace reports it (-I meters are not traced themselves,
+  // as Radiance's rayirrad does not call the trace hook).
+  std::vector<TracedRay> traced(std::size_t primary) const {
+    std::vector<TracedRay> out;
+    for (const auto& [t, depth] : tally.traced(primary)) {
+      if (depth == 0 && settings.irradiance_I) continue;
+      TracedRay r;
+      r.depth = depth;
+      if (t->is_shadow) {
+        const rc_shadow& s = t->shadow.request;
+        r.shadow = true;
+        r.org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
+        r.dir = {s.dir.x, s.dir.y, s.dir.z};
+        // The source's radiance as the shadow ray brought it back, and the factor that made
+        // its contribution.
+        const rc_source& src = cs.sources.sources[s.source];
+        const float e[3] = {src.emit.x, src.emit.y, src.emit.z};
+        const float c0[3] = {s.contrib.x, s.contrib.y, s.contrib.z};
+        const float c1[3] = {t->shadow.arrived.x, t->shadow.arrived.y, t->shadow.arrived.z};
+        for (int i = 0; i < 3; ++i) {
+          double pass = !t->shadow.blocked && c0[i] > 0 ? c1[i] / c0[i] : 0.0;
+          r.value[i] = e[i] * pass;
+          r.coef[i] = e[i] > 0 ? c0[i] / e[i] : 0.0;
+          r.contribution[i] = t->shadow.blocked ? 0.0 : c1[i];
+        }
+        r.weight = 1;
+        if (!t->shadow.blocked) { // it met its source
+          if (src.kind == RC_SRC_DISTANT) {
+            r.surface = distant_surface(cs, geom, r.dir);
+          } else {
+            r.surface = src.surface;
+            r.hit = true;
+            r.t = s.dir.w;
+            for (int i = 0; i < 3; ++i)
+              r.point[i] = r.org[i] + r.t * r.dir[i];
+          }
+        }
+        if (!r.hit) r.point = r.org;
+        out.push_back(r);
+        continue;
+      }
+      const rc_ray& q = t->ray;
+      const rc_hit& h = t->hit;
+      r.org = {q.org.x + centre[0], q.org.y + centre[1], q.org.z + centre[2]};
+      r.dir = {q.dir.x, q.dir.y, q.dir.z};
+      r.weight = q.coef.w;
+      const Vec3d& sum = tally.node_sum(t->node);
+      const float c[3] = {q.coef.x, q.coef.y, q.coef.z};
+      for (int i = 0; i < 3; ++i) {
+        r.coef[i] = c[i];
+        r.contribution[i] = sum[i];
+        r.value[i] = c[i] > 0 ? sum[i] / c[i] : 0.0;
+      }
+      r.surface = h.surface < cs.surfaces.size() ? h.surface : RC_NONE;
+      r.point = r.org;
+      if (h.surface != RC_NONE && h.pos.w >= 0) {
+        r.hit = true;
+        r.t = h.pos.w;
+        r.point = {h.pos.x + centre[0], h.pos.y + centre[1], h.pos.z + centre[2]};
+        r.normal = {h.nrm.x, h.nrm.y, h.nrm.z};
+      }
+      out.push_back(r);
+    }
+    return out;
   }
 
   // The second pass of -as: the hemispheres' rays are shaded again and write only the
@@ -380,6 +448,8 @@ struct Renderer::Impl {
     ctx.run(shade, n);
 
     std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);
+    std::vector<rc_shadow> requested;
+    if (settings.trace == RenderSettings::Trace::RaysAndShadows) requested = shadows;
     std::vector<std::uint8_t> blocked = trace_shadows(shadows);
     if (nshadow > 0) bshadows.write(shadows.data(), nshadow * sizeof(rc_shadow));
     device::Buffer& bblocked = scratch(kBlocked, blocked);
@@ -395,9 +465,18 @@ struct Renderer::Impl {
     std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
     std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
     if (tree) {
+      std::vector<TallyTree::TracedShadow> ts;
       for (std::size_t i = 0; i < n; ++i) {
         std::size_t end = i + 1 < n ? spawn_off[i + 1] : nspawn;
-        tally.shaded(rays[i], hit[i], total[i], children.data() + spawn_off[i], end - spawn_off[i]);
+        ts.clear();
+        if (!requested.empty()) {
+          std::size_t send = i + 1 < n ? shadow_off[i + 1] : nshadow;
+          for (std::size_t k = shadow_off[i]; k < send; ++k)
+            if (requested[k].source != RC_NONE) // not a -dt estimate
+              ts.push_back({requested[k], shadows[k].contrib, blocked[k] != 0});
+        }
+        tally.shaded(rays[i], hit[i], total[i], children.data() + spawn_off[i], end - spawn_off[i],
+                     ts.data(), ts.size());
       }
       next.insert(next.end(), children.begin(), children.end());
       return;

@@ -16,13 +16,48 @@ constexpr double kFtiny = 1e-6;
 
 } // namespace
 
-void TallyTree::reset(std::size_t primaries, std::uint32_t seed) {
+void TallyTree::reset(std::size_t primaries, std::uint32_t seed, bool trace) {
   nodes_.assign(primaries, Node{});
-  for (Node& n : nodes_)
-    n.pending = 1;
   hemis_.clear();
   requests_.clear();
+  traced_.clear();
+  trace_ = trace;
   seed_ = seed;
+  for (std::size_t i = 0; i < primaries; ++i) {
+    nodes_[i].pending = 1;
+    if (trace) {
+      nodes_[i].traced = static_cast<std::uint32_t>(i);
+      traced_.emplace_back();
+      traced_.back().node = static_cast<std::uint32_t>(i);
+    }
+  }
+}
+
+std::uint32_t TallyTree::ray_node(std::uint32_t parent, std::uint32_t rec) {
+  Node n;
+  n.kind = Kind::Ray;
+  n.parent = parent;
+  n.pending = 1;
+  n.traced = static_cast<std::uint32_t>(traced_.size());
+  std::uint32_t id = static_cast<std::uint32_t>(nodes_.size());
+  traced_.emplace_back();
+  traced_.back().node = id;
+  traced_[rec].kids.push_back(n.traced);
+  nodes_.push_back(n);
+  ++nodes_[parent].pending;
+  return id;
+}
+
+std::vector<std::pair<const TallyTree::Traced*, int>> TallyTree::traced(std::size_t primary) const {
+  std::vector<std::pair<const Traced*, int>> out;
+  if (!trace_) return out;
+  auto visit = [&](auto&& self, std::uint32_t rec, int depth) -> void {
+    for (std::uint32_t k : traced_[rec].kids)
+      self(self, k, depth + 1);
+    out.emplace_back(&traced_[rec], depth);
+  };
+  visit(visit, static_cast<std::uint32_t>(primary), 0);
+  return out;
 }
 
 void TallyTree::add(std::uint32_t node, const rc_float4& c, bool mirrored) {
@@ -38,12 +73,29 @@ void TallyTree::add(std::uint32_t node, const rc_float4& c, bool mirrored) {
 }
 
 void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& total,
-                       rc_ray* children, std::size_t nchildren) {
+                       rc_ray* children, std::size_t nchildren, const TracedShadow* shadows,
+                       std::size_t nshadows) {
   add(ray.tally, total, ray.flags & RC_RAY_MIRRORED);
+  std::uint32_t rec = nodes_[ray.tally].traced;
+  if (trace_) {
+    traced_[rec].ray = ray;
+    traced_[rec].hit = hit;
+    traced_[rec].shaded = true;
+    for (std::size_t k = 0; k < nshadows; ++k) {
+      Traced t;
+      t.is_shadow = true;
+      t.shadow = shadows[k];
+      traced_[rec].kids.push_back(static_cast<std::uint32_t>(traced_.size()));
+      traced_.push_back(std::move(t));
+    }
+  }
   for (std::size_t k = 0; k < nchildren;) {
     rc_ray& c = children[k];
     if (!(c.cell & RC_CELL_FLAG)) {
-      ++nodes_[c.tally].pending;
+      if (trace_)
+        c.tally = ray_node(ray.tally, rec);
+      else
+        ++nodes_[c.tally].pending;
       ++k;
       continue;
     }
@@ -66,6 +118,7 @@ void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& to
     h.node = static_cast<std::uint32_t>(nodes_.size());
     h.first_cell = h.node + 1;
     Node hn;
+    hn.kind = Kind::Hemi;
     hn.parent = ray.tally;
     hn.pending = static_cast<std::int64_t>(m);
     hn.hemi = static_cast<std::uint32_t>(hemis_.size());
@@ -73,10 +126,14 @@ void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& to
     nodes_.push_back(hn);
     for (std::size_t j = 0; j < m; ++j) {
       Node cn;
+      cn.kind = Kind::Cell;
       cn.parent = h.node;
-      cn.pending = 1;
+      cn.pending = trace_ ? 0 : 1; // in trace mode the sample's own node counts
       nodes_.push_back(cn);
-      children[k + j].tally = h.first_cell + static_cast<std::uint32_t>(j);
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+      std::uint32_t cell = h.first_cell + static_cast<std::uint32_t>(j);
+      children[k + j].tally = trace_ ? ray_node(cell, rec) : cell;
       children[k + j].cell = 0;
     }
     hemis_.push_back(h);
@@ -92,13 +149,16 @@ void TallyTree::supersampled(const SuperRequest& r, rc_ray* children, std::size_
   std::uint32_t last = RC_NONE;
   for (std::size_t k = 0; k < nchildren; ++k) {
     std::uint32_t cell = h.first_cell + RC_CELL_INDEX(children[k].cell);
-    Node& n = nodes_[cell];
     // Children come division by division; a division counts once towards the hemisphere.
     if (cell != last) ++cells;
     last = cell;
-    ++n.pending;
-    ++n.count;
-    children[k].tally = cell;
+    ++nodes_[cell].count;
+    if (trace_) {
+      children[k].tally = ray_node(cell, nodes_[nodes_[h.node].parent].traced);
+    } else {
+      ++nodes_[cell].pending;
+      children[k].tally = cell;
+    }
     children[k].cell = 0;
   }
   // The placeholder that kept the hemisphere open while the samples were asked for.
@@ -175,10 +235,20 @@ std::vector<std::uint32_t> TallyTree::allocate(const Hemi& h) const {
 void TallyTree::settle(std::uint32_t id) {
   for (;;) {
     Node& n = nodes_[id];
-    if (n.pending != 0 || n.parent == RC_NONE) return; // waiting, or a finished primary
-    if (n.hemi == RC_NONE) { // a division: its hemisphere waits for one fewer
+    if (n.pending != 0 || n.kind == Kind::Primary) return; // waiting, or a finished primary
+    if (n.kind == Kind::Cell) { // a division: its hemisphere waits for one fewer
       id = n.parent;
       --nodes_[id].pending;
+      continue;
+    }
+    if (n.kind == Kind::Ray) { // a traced ray: its sum is final and goes to its parent
+      Node& p = nodes_[n.parent];
+      for (int i = 0; i < 3; ++i) {
+        p.sum[i] += n.sum[i];
+        p.msum[i] += n.msum[i];
+      }
+      --p.pending;
+      id = n.parent;
       continue;
     }
     Hemi& h = hemis_[n.hemi];

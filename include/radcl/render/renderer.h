@@ -46,6 +46,25 @@ struct RenderSettings {
   // ids (neighbouring pixels stratify each other) instead of independent random numbers.
   bool low_discrepancy = false;
   std::size_t wave_size = 1u << 18; // primaries per wave
+  // rtrace's trace modes: every ray of each primary's tree is reported (-ot), shadow rays
+  // too (-oT).
+  enum class Trace { Off, Rays, RaysAndShadows };
+  Trace trace = Trace::Off;
+};
+
+// One ray of a primary's tree in trace mode (rtrace -ot/-oT), in Radiance's terms.
+struct TracedRay {
+  int depth = 0; // ancestors: rtrace indents a traced ray by one TAB per ancestor
+  bool shadow = false;
+  Vec3d org{}, dir{};
+  Vec3d value{};        // the ray's own radiance (Radiance's rcol)
+  Vec3d contribution{}; // what it adds to the primary: value x coefficient (V)
+  Vec3d coef{};         // product of coefficients back to the primary (W)
+  double weight = 0;    // w
+  bool hit = false;     // a surface (not just a distant source) was hit
+  double t = 1e10;
+  Vec3d point{}, normal{};
+  std::uint32_t surface = RC_NONE;
 };
 
 struct PrimaryRay {
@@ -67,6 +86,7 @@ struct PrimaryResult {
   Vec3d mirrored{};     // part of `value` that came through the first hit's mirror reflection
   double mirror_t = -1; // distance the mirror-reflected ray travelled (1e10: nothing hit), -1: none
   double through_t = -1; // length of the straight transmission beyond the first hit, -1: none
+  std::vector<TracedRay> traced; // trace mode: the tree in post-order (children first)
 };
 
 // Rays traced so far (what Embree was asked), for reports and benchmarks.

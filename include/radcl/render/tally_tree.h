@@ -3,6 +3,8 @@
 // add into one cell per division; once every ray below a hemisphere has finished, the cells'
 // values decide where the super-samples go (Radiance's ambsupersamp), and once those have
 // finished too, the hemisphere adds the sum of its divisions' averages into its parent.
+// In rtrace's trace modes (-ot/-oT) every ray gets a node of its own, so each ray's value is
+// known when its subtree has finished, and the tree can be printed in Radiance's order.
 #pragma once
 
 #include <array>
@@ -27,13 +29,33 @@ public:
     std::vector<std::uint32_t> counts; // ns * ns
   };
 
-  // Primaries 0..n-1, each waiting for its own ray.
-  void reset(std::size_t primaries, std::uint32_t seed);
+  // A traced shadow ray (-oT): its request, its contribution on arrival, whether it arrived.
+  struct TracedShadow {
+    rc_shadow request;
+    rc_float4 arrived;
+    bool blocked;
+  };
+
+  // A ray of a traced tree, with its node's final sum (its contribution to the primary).
+  struct Traced {
+    rc_ray ray{};
+    rc_hit hit{};
+    bool shaded = false;
+    bool is_shadow = false;
+    TracedShadow shadow{};
+    std::uint32_t node = RC_NONE;
+    std::vector<std::uint32_t> kids; // in the order they were made
+  };
+
+  // Primaries 0..n-1, each waiting for its own ray; `trace` gives every ray a node.
+  void reset(std::size_t primaries, std::uint32_t seed, bool trace = false);
 
   // A shaded ray's total and children: marks hemisphere samples' tallies (children are
-  // rewritten in place), counts the children as pending, retires the ray.
+  // rewritten in place), counts the children as pending, retires the ray. In trace mode the
+  // ray's shadow rays join its traced children.
   void shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& total, rc_ray* children,
-              std::size_t nchildren);
+              std::size_t nchildren, const TracedShadow* shadows = nullptr,
+              std::size_t nshadows = 0);
 
   // Super-sample children of request `r` (their cell field names the division).
   void supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren);
@@ -42,12 +64,18 @@ public:
   std::vector<SuperRequest> take_requests() { return std::move(requests_); }
 
   const Vec3d& sum(std::size_t primary) const { return nodes_[primary].sum; }
+  // Trace mode: the primary's traced rays in post-order (children first), with their depth.
+  std::vector<std::pair<const Traced*, int>> traced(std::size_t primary) const;
+  const Vec3d& node_sum(std::uint32_t node) const { return nodes_[node].sum; }
   const Vec3d& mirrored(std::size_t primary) const { return nodes_[primary].msum; }
   std::uint64_t hemispheres() const { return hemis_.size(); }
 
 private:
+  enum class Kind : std::uint8_t { Primary, Ray, Cell, Hemi };
   struct Node {
-    std::uint32_t parent = RC_NONE; // a cell's hemisphere, a hemisphere's tally
+    Kind kind = Kind::Primary;
+    std::uint32_t traced = RC_NONE; // trace mode: the ray's record
+    std::uint32_t parent = RC_NONE; // a cell's hemisphere, a hemisphere's or ray's tally
     std::int64_t pending = 0;       // rays in flight + hemispheres below not yet resolved
     Vec3d sum{}, msum{};            // contributions; the part below the mirror reflection
     std::uint32_t count = 1;        // a cell's samples
@@ -62,12 +90,16 @@ private:
   };
 
   void add(std::uint32_t node, const rc_float4& c, bool mirrored);
+  // Trace mode: a node of its own for a child ray under `parent`, recorded under `rec`.
+  std::uint32_t ray_node(std::uint32_t parent, std::uint32_t rec);
   void settle(std::uint32_t node);
   std::vector<std::uint32_t> allocate(const Hemi& h) const;
 
   std::vector<Node> nodes_;
   std::vector<Hemi> hemis_;
   std::vector<SuperRequest> requests_;
+  std::vector<Traced> traced_;
+  bool trace_ = false;
   std::uint32_t seed_ = 0;
 };
 
