@@ -1,4 +1,5 @@
 #include "radcl/scene/portable_io.h"
+#include "radcl/scene/command.h"
 
 #include <cctype>
 #include <cmath>
@@ -65,7 +66,7 @@ void put_str(std::string& out, std::string_view s) {
 
 std::string read_input_bytes(const std::string& spec, const std::string& what) {
   if (!spec.empty() && spec[0] == '!') {
-    std::FILE* p = ::popen(spec.c_str() + 1, "r");
+    std::FILE* p = open_command(spec.substr(1));
     if (!p) throw FatalError("cannot open " + what + " \"" + spec + "\"");
     std::string data;
     char buf[65536];

@@ -1,6 +1,7 @@
 // Radiance scene files (scene-format.md §1): the top-level loop of readobj(), primitives,
 // alias, and the modifier index with its "identical redefinition" rule.
 #include "radcl/scene/rad_reader.h"
+#include "radcl/scene/command.h"
 
 #include <cerrno>
 #include <cmath>
@@ -60,7 +61,7 @@ void Reader::read_path(const std::string& path) {
   }
   if (depth_ >= kMaxCommandDepth) throw FatalError("(" + path + "): commands nested too deeply");
   std::fflush(nullptr); // nothing of ours may reach the command's output twice
-  std::FILE* pipe = popen(path.c_str() + 1, "r");
+  std::FILE* pipe = open_command(path.substr(1));
   if (!pipe) throw FatalError("cannot execute \"" + path + "\": " + std::strerror(errno));
   struct Closer { // the child is reaped even when parsing its output fails
     std::FILE* f;
