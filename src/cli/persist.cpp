@@ -9,7 +9,6 @@
 #include <exception>
 #include <fcntl.h>
 #include <poll.h>
-#include <spawn.h>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -25,6 +24,7 @@ namespace radcl::cli {
 namespace {
 
 constexpr const char* kServerEnv = "RADCL_PERSIST_SERVER";
+constexpr const char* kParentEnv = "RADCL_PERSIST_PARENT";
 constexpr const char* kMagic = "radcl-persist";
 constexpr int kIdleLimit = 8 * 3600; // Radiance's TIMELIM for an idle server
 constexpr int kAttachWait = 600;     // seconds a client waits for a server to get ready
@@ -165,6 +165,14 @@ bool is_persist_server() {
     const char* v = std::getenv(kServerEnv);
     bool s = v && std::string(v) == "1";
     ::unsetenv(kServerEnv); // commands the scene runs are ordinary processes
+    // The first run is still exiting: on a GPU in exclusive-process compute mode its device
+    // context must be gone before ours can exist, so wait for it (a few seconds at most).
+    if (const char* p = std::getenv(kParentEnv)) {
+      pid_t parent = static_cast<pid_t>(std::atol(p));
+      for (int i = 0; s && parent > 0 && i < 300 && ::kill(parent, 0) == 0; ++i)
+        ::usleep(20000);
+      ::unsetenv(kParentEnv);
+    }
     return s;
   }();
   return server;
@@ -290,26 +298,38 @@ void start_persist_server(const std::vector<std::string>& argv) {
   a.push_back(nullptr);
   std::vector<std::string> env_store;
   for (char** e = environ; *e; ++e)
-    if (std::strncmp(*e, kServerEnv, std::strlen(kServerEnv)) != 0) env_store.emplace_back(*e);
+    if (std::strncmp(*e, kServerEnv, std::strlen(kServerEnv)) != 0 &&
+        std::strncmp(*e, kParentEnv, std::strlen(kParentEnv)) != 0)
+      env_store.emplace_back(*e);
   env_store.push_back(std::string(kServerEnv) + "=1");
+  env_store.push_back(std::string(kParentEnv) + "=" + std::to_string(::getpid()));
   std::vector<char*> env;
   for (std::string& s : env_store)
     env.push_back(s.data());
   env.push_back(nullptr);
 
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  // Detached from our pipes: whoever reads our output must see its end when we exit.
-  for (int fd : {0, 1, 2})
-    posix_spawn_file_actions_addopen(&fa, fd, "/dev/null", fd == 0 ? O_RDONLY : O_WRONLY, 0);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSID);
-  pid_t pid;
-  int rc = posix_spawn(&pid, "/proc/self/exe", &fa, &attr, a.data(), env.data());
-  posix_spawn_file_actions_destroy(&fa);
-  posix_spawnattr_destroy(&attr);
-  if (rc != 0) throw FatalError("cannot start persist server");
+  // fork + exec rather than posix_spawn: the child must close every descriptor it inherits
+  // before exec, or a GPU driver's open device files (NVIDIA's are not close-on-exec) leave the
+  // server without a usable device.
+  const char* log = std::getenv("RADCL_PERSIST_LOG");
+  std::string logfile = log ? log : "";
+  std::fflush(nullptr);
+  pid_t pid = ::fork();
+  if (pid < 0) throw FatalError("cannot start persist server");
+  if (pid == 0) {
+    ::setsid();
+    int null = ::open("/dev/null", O_RDWR);
+    // RADCL_PERSIST_LOG names a file for the server's own messages (they are lost otherwise).
+    int err = logfile.empty() ? null : ::open(logfile.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    ::dup2(null, 0);
+    ::dup2(null, 1); // detached from our pipes: whoever reads our output sees its end
+    ::dup2(err >= 0 ? err : null, 2);
+    long maxfd = ::sysconf(_SC_OPEN_MAX);
+    for (long fd = 3; fd < (maxfd > 0 ? maxfd : 1024); ++fd)
+      ::close(static_cast<int>(fd));
+    ::execve("/proc/self/exe", a.data(), env.data());
+    ::_exit(127);
+  }
   // The server owns the control file from now on.
   release_persist_file();
 }
