@@ -160,7 +160,21 @@ std::string find_persist_file(const std::vector<std::string>& args, PersistMode*
   return "";
 }
 
+// The environment as the program started: libraries change it in-process (an OpenCL driver
+// removing itself from OCL_ICD_FILENAMES, PoCL setting HWLOC_PLUGINS_PATH), and the server
+// must start as the first run did.
+std::vector<std::string>& initial_environment() {
+  static std::vector<std::string> env = [] {
+    std::vector<std::string> v;
+    for (char** e = environ; *e; ++e)
+      v.emplace_back(*e);
+    return v;
+  }();
+  return env;
+}
+
 bool is_persist_server() {
+  initial_environment();
   static const bool server = [] {
     const char* v = std::getenv(kServerEnv);
     bool s = v && std::string(v) == "1";
@@ -297,10 +311,10 @@ void start_persist_server(const std::vector<std::string>& argv) {
     a.push_back(const_cast<char*>(s.c_str()));
   a.push_back(nullptr);
   std::vector<std::string> env_store;
-  for (char** e = environ; *e; ++e)
-    if (std::strncmp(*e, kServerEnv, std::strlen(kServerEnv)) != 0 &&
-        std::strncmp(*e, kParentEnv, std::strlen(kParentEnv)) != 0)
-      env_store.emplace_back(*e);
+  for (const std::string& e : initial_environment())
+    if (e.compare(0, std::strlen(kServerEnv), kServerEnv) != 0 &&
+        e.compare(0, std::strlen(kParentEnv), kParentEnv) != 0)
+      env_store.push_back(e);
   env_store.push_back(std::string(kServerEnv) + "=1");
   env_store.push_back(std::string(kParentEnv) + "=" + std::to_string(::getpid()));
   std::vector<char*> env;
@@ -324,6 +338,12 @@ void start_persist_server(const std::vector<std::string>& argv) {
     ::dup2(null, 0);
     ::dup2(null, 1); // detached from our pipes: whoever reads our output sees its end
     ::dup2(err >= 0 ? err : null, 2);
+    // Nothing of our signal state either (exec keeps ignored signals and the mask).
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    for (int sig = 1; sig < NSIG; ++sig)
+      if (sig != SIGKILL && sig != SIGSTOP) std::signal(sig, SIG_DFL);
     long maxfd = ::sysconf(_SC_OPEN_MAX);
     for (long fd = 3; fd < (maxfd > 0 ? maxfd : 1024); ++fd)
       ::close(static_cast<int>(fd));
