@@ -1,6 +1,7 @@
 // Four processes append to one file at the same time, as rtrace -n or several rtrace/rpict
 // runs do with -af: every record must arrive exactly once, whole, and the file must pass the
 // reader. Each process also checks that it saw every other process's records at its syncs.
+#include <cstdio>
 #include <gtest/gtest.h>
 #include <map>
 #include <set>
@@ -141,6 +142,13 @@ TEST(AmbientConcurrency, FourProcessesAppendWithoutLossOrTearing) {
       EXPECT_EQ(prev.pos[2] + 1, r.pos[2]);
     }
   }
+  // How much the writers interleaved (not asserted: the scheduler decides).
+  int switches = 0;
+  for (std::size_t i = 1; i < c.records.size(); ++i)
+    switches += c.records[i].pos[0] != c.records[i - 1].pos[0];
+  ::testing::Test::RecordProperty("writer_switches", switches);
+  std::printf("writer switches in the file: %d of %zu batches\n", switches,
+              static_cast<std::size_t>(kProcesses * kBatches));
   // Reopening as a writer finds nothing to repair.
   AmbientFile f;
   EXPECT_EQ(f.open(path, image_header()).size(), expected);
