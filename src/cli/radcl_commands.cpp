@@ -4,6 +4,8 @@ namespace radcl::cli {
 
 std::span<const Command> commands() {
   static const Command kCommands[] = {
+      {"ambient", "print a .amb irradiance cache as text (-d, -h), or text back to .amb (-r)",
+       cmd_ambient},
       {"devices", "list OpenCL devices (RADCL_DEVICE selects one); --check tests each",
        cmd_devices},
       {"scene", "summarise a scene (octree or .rad files); --list prints every object", cmd_scene},
