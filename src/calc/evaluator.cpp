@@ -102,7 +102,19 @@ double Evaluator::eval_variable(std::string_view name, const std::string& ctx) {
     if (slot.first == tick_) return slot.second;
     bool outer_used = used_context_;
     used_context_ = false;
-    double v = eval_node(d->body, d->context, nullptr);
+    // A variable defined through itself recurses like a function without a base case.
+    if (depth_ >= max_depth_)
+      throw FatalError(d->name + ": recursion deeper than " + std::to_string(max_depth_) +
+                       " calls (missing base case?)");
+    ++depth_;
+    double v;
+    try {
+      v = eval_node(d->body, d->context, nullptr);
+    } catch (...) {
+      --depth_;
+      throw;
+    }
+    --depth_;
     // A `:` constant that needed no ray or arguments keeps its value for good.
     if (d->constant && !used_context_) const_cast<Definition*>(d)->body = Node::number(v);
     used_context_ = used_context_ || outer_used;
