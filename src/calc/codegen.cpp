@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <set>
 
 #include "radcl/calc/evaluator.h"
 #include "radcl/calc/library.h"
@@ -36,8 +37,10 @@ std::string mangle(std::string_view name) {
   std::string out;
   for (char c : name) {
     unsigned char u = static_cast<unsigned char>(c);
-    if (std::isalnum(u)) out += c;
-    else out += '_';
+    if (std::isalnum(u))
+      out += c;
+    else
+      out += '_';
   }
   return out;
 }
@@ -71,6 +74,7 @@ struct CodeGenerator::Impl {
   std::map<int, int> scc;                      // definition id -> component
   std::map<int, std::optional<double>> folded; // variable definition id -> host value
   bool scc_done = false;
+  std::set<int> cyclic, self; // components with more than one definition; self-referencing ids
 
   struct Scope {
     const Definition* def = nullptr; // the definition being generated; null in wrappers
@@ -103,6 +107,7 @@ struct CodeGenerator::Impl {
         if (n.op != Op::Var && n.op != Op::Call) return;
         const Definition* t = prog.lookup(n.name, d->context);
         if (!t) return;
+        if (t == d) self.insert(d->id);
         if (!index.count(t->id)) {
           visit(t);
           low[d->id] = std::min(low[d->id], low[t->id]);
@@ -112,17 +117,25 @@ struct CodeGenerator::Impl {
       });
       if (low[d->id] == index[d->id]) {
         const Definition* t;
+        int size = 0;
         do {
           t = stack.back();
           stack.pop_back();
           on[t->id] = false;
           scc[t->id] = comp;
+          ++size;
         } while (t != d);
+        if (size > 1) cyclic.insert(comp);
         ++comp;
       }
     };
     for (const Definition* d : defs)
       if (!index.count(d->id)) visit(d);
+  }
+
+  bool recursive(const Definition* d) {
+    compute_scc();
+    return self.count(d->id) || cyclic.count(scc[d->id]);
   }
 
   bool same_cycle(const Definition* a, const Definition* b) {
@@ -147,7 +160,7 @@ struct CodeGenerator::Impl {
   }
 
   std::string add_function(const std::string& key, const std::string& name,
-                            const std::string& proto) {
+                           const std::string& proto) {
     if (static_cast<int>(functions.size()) >= opt.max_functions)
       fail("too many generated .cal functions (runaway specialisation?)");
     by_key[key] = name;
@@ -162,7 +175,10 @@ struct CodeGenerator::Impl {
       key += "#" + c.key();
     if (auto it = by_key.find(key); it != by_key.end()) return it->second;
     std::string name = "rc_cal_" + mangle(d->name) + "_" + std::to_string(functions.size());
-    std::string proto = "rc_calc_real " + name + "(rc_calc_env* e";
+    // Copies of recursive functions stay calls: inlining the whole unrolled chain makes
+    // programs that take minutes to compile.
+    std::string proto = std::string(recursive(d) ? "RC_CALC_NOINLINE " : "") + "rc_calc_real " +
+                        name + "(rc_calc_env* e";
     for (std::size_t i = 0; i < d->params.size(); ++i)
       if (!bound[i].set()) proto += ", rc_calc_real p" + std::to_string(i);
     proto += ")";
@@ -214,8 +230,10 @@ struct CodeGenerator::Impl {
     if (n.op == Op::Var) {
       Callee c;
       const Definition* d = prog.lookup(n.name, sc.ctx);
-      if (d && d->function) c.def = d;
-      else c.lib = find_library(n.name);
+      if (d && d->function)
+        c.def = d;
+      else
+        c.lib = find_library(n.name);
       if (!c.set()) fail(n.name + ": undefined function");
       return c;
     }
@@ -288,8 +306,10 @@ struct CodeGenerator::Impl {
       }
       return check(t);
     }
-    case Lib::Rand: return check("rc_calc_rand(" + arg(0) + ")");
-    case Lib::Arg: return "rc_calc_arg(e, " + arg(0) + ")";
+    case Lib::Rand:
+      return check("rc_calc_rand(" + arg(0) + ")");
+    case Lib::Arg:
+      return "rc_calc_arg(e, " + arg(0) + ")";
     case Lib::Atan2: {
       std::string y = arg(0);
       return check("atan2(" + y + ", " + arg(1) + ")");
@@ -301,7 +321,8 @@ struct CodeGenerator::Impl {
     case Lib::Fnoise3: {
       std::string x = arg(0), y = arg(1), z = arg(2);
       if (lib->id == Lib::Fnoise3) return check("rc_fnoise3(" + x + ", " + y + ", " + z + ")");
-      int axis = lib->id == Lib::Noise3 ? 3 : static_cast<int>(lib->id) - static_cast<int>(Lib::Noise3x);
+      int axis =
+          lib->id == Lib::Noise3 ? 3 : static_cast<int>(lib->id) - static_cast<int>(Lib::Noise3x);
       return check("rc_noise3(" + x + ", " + y + ", " + z + ", " + std::to_string(axis) + ")");
     }
     default:
@@ -357,8 +378,7 @@ struct CodeGenerator::Impl {
       fail(n.name + ": undefined function");
     }
     case Op::PCall: {
-      if (!sc.bound || n.index >= static_cast<int>(sc.bound->size()) ||
-          !(*sc.bound)[n.index].set())
+      if (!sc.bound || n.index >= static_cast<int>(sc.bound->size()) || !(*sc.bound)[n.index].set())
         fail(sc.fname + ": argument not a function");
       const Callee& c = (*sc.bound)[n.index];
       return c.def ? user_call(c.def, n.kids, sc, out) : lib_call(c.lib, n.kids, sc, out);

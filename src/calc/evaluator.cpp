@@ -256,26 +256,66 @@ double Evaluator::library(int id, const std::string& name, Frame& f) {
     r = x - std::floor(x);
     break;
   }
-  case Lib::Floor: r = std::floor(a(0)); break;
-  case Lib::Ceil: r = std::ceil(a(0)); break;
-  case Lib::Sqrt: r = std::sqrt(a(0)); break;
-  case Lib::Sin: r = std::sin(a(0)); break;
-  case Lib::Cos: r = std::cos(a(0)); break;
-  case Lib::Tan: r = std::tan(a(0)); break;
-  case Lib::Asin: r = std::asin(a(0)); break;
-  case Lib::Acos: r = std::acos(a(0)); break;
-  case Lib::Atan: r = std::atan(a(0)); break;
-  case Lib::Atan2: r = std::atan2(a(0), a(1)); break;
-  case Lib::Exp: r = std::exp(a(0)); break;
-  case Lib::Log: r = std::log(a(0)); break;
-  case Lib::Log10: r = std::log10(a(0)); break;
-  case Lib::Erf: r = std::erf(a(0)); break;
-  case Lib::Erfc: r = std::erfc(a(0)); break;
-  case Lib::Noise3: r = rc_noise3(a(0), a(1), a(2), 3); break;
-  case Lib::Noise3x: r = rc_noise3(a(0), a(1), a(2), 0); break;
-  case Lib::Noise3y: r = rc_noise3(a(0), a(1), a(2), 1); break;
-  case Lib::Noise3z: r = rc_noise3(a(0), a(1), a(2), 2); break;
-  case Lib::Fnoise3: r = rc_fnoise3(a(0), a(1), a(2)); break;
+  case Lib::Floor:
+    r = std::floor(a(0));
+    break;
+  case Lib::Ceil:
+    r = std::ceil(a(0));
+    break;
+  case Lib::Sqrt:
+    r = std::sqrt(a(0));
+    break;
+  case Lib::Sin:
+    r = std::sin(a(0));
+    break;
+  case Lib::Cos:
+    r = std::cos(a(0));
+    break;
+  case Lib::Tan:
+    r = std::tan(a(0));
+    break;
+  case Lib::Asin:
+    r = std::asin(a(0));
+    break;
+  case Lib::Acos:
+    r = std::acos(a(0));
+    break;
+  case Lib::Atan:
+    r = std::atan(a(0));
+    break;
+  case Lib::Atan2:
+    r = std::atan2(a(0), a(1));
+    break;
+  case Lib::Exp:
+    r = std::exp(a(0));
+    break;
+  case Lib::Log:
+    r = std::log(a(0));
+    break;
+  case Lib::Log10:
+    r = std::log10(a(0));
+    break;
+  case Lib::Erf:
+    r = std::erf(a(0));
+    break;
+  case Lib::Erfc:
+    r = std::erfc(a(0));
+    break;
+  case Lib::Noise3:
+    r = rc_noise3(a(0), a(1), a(2), 3);
+    break;
+  case Lib::Noise3x:
+    r = rc_noise3(a(0), a(1), a(2), 0);
+    break;
+  case Lib::Noise3y:
+    r = rc_noise3(a(0), a(1), a(2), 1);
+    break;
+  case Lib::Noise3z:
+    r = rc_noise3(a(0), a(1), a(2), 2);
+    break;
+  case Lib::Fnoise3:
+    r = rc_fnoise3(a(0), a(1), a(2));
+    break;
   case Lib::Arg: {
     if (!has_args_) throw FatalError("bad call to arg(n) - illegal constant in .cal file?");
     used_context_ = true;

@@ -86,7 +86,8 @@ private:
 
   [[noreturn]] void syntax(const std::string& msg) const {
     std::size_t end = text_.find('\n', line_start_);
-    std::string line(text_.substr(line_start_, end == std::string_view::npos ? end : end - line_start_));
+    std::string line(
+        text_.substr(line_start_, end == std::string_view::npos ? end : end - line_start_));
     std::string where;
     if (!source_.empty()) where = source_ + ", line " + std::to_string(line_) + ":\n";
     std::string caret;

@@ -13,8 +13,10 @@ std::string qualify(std::string_view name, const std::string& context) {
   std::string n(name);
   if (n.empty()) return n;
   if (n.back() == '`') return n.substr(0, n.size() - 1); // name` : global
-  if (n.front() == '`') n.erase(0, 1);                    // `name : local
-  else if (n.find('`') != std::string::npos) return n;    // explicit a`b
+  if (n.front() == '`')
+    n.erase(0, 1); // `name : local
+  else if (n.find('`') != std::string::npos)
+    return n; // explicit a`b
   return context.empty() ? n : n + "`" + context;
 }
 

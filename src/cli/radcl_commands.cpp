@@ -6,6 +6,8 @@ std::span<const Command> commands() {
   static const Command kCommands[] = {
       {"devices", "list OpenCL devices (RADCL_DEVICE selects one); --check tests each",
        cmd_devices},
+      {"calc", "evaluate .cal expressions (-f file, -e statements, -r rayinit.cal, -c OpenCL C)",
+       cmd_calc},
       {"scene", "summarise a scene (octree or .rad files); --list prints every object", cmd_scene},
   };
   return kCommands;

@@ -13,6 +13,7 @@ struct Command {
 
 std::span<const Command> commands();
 
+int cmd_calc(int argc, char** argv);
 int cmd_devices(int argc, char** argv);
 int cmd_scene(int argc, char** argv);
 

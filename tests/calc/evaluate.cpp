@@ -137,7 +137,7 @@ TEST_F(Calc, IfAndSelect) {
   EXPECT_EQ(eval("select(2, 10, 20, 30)"), 20);
   EXPECT_EQ(eval("select(2.4, 10, 20, 30)"), 20);
   EXPECT_EQ(eval("select(2.6, 10, 20, 30)"), 30);
-  EXPECT_EQ(eval("select(0, 10, 20, 30)"), 3); // 0: number of choices
+  EXPECT_EQ(eval("select(0, 10, 20, 30)"), 3);   // 0: number of choices
   EXPECT_EQ(eval("select(z+4, 10, 20, 30)"), 0); // out of range: domain error, 0
   EXPECT_EQ(eval("select(z-1, 10, 20, 30)"), 0);
   ASSERT_EQ(g_warnings.size(), 2u);
@@ -247,11 +247,13 @@ TEST_F(Calc, UndefinedNames) {
 }
 
 TEST_F(Calc, SyntaxErrorsNameFileLineAndPosition) {
-  EXPECT_EQ(load_error("a = 1;\nb = 2 +;\n"), "t.cal, line 2:\nb = 2 +;\n       ^ unexpected character");
+  EXPECT_EQ(load_error("a = 1;\nb = 2 +;\n"),
+            "t.cal, line 2:\nb = 2 +;\n       ^ unexpected character");
   EXPECT_EQ(load_error("a = (1;"), "t.cal, line 1:\na = (1;\n      ^ ')' expected");
   EXPECT_EQ(load_error("a = 1 b = 2"), "t.cal, line 1:\na = 1 b = 2\n      ^ ';' expected");
   EXPECT_EQ(load_error("a = 1/0;"), "t.cal, line 1:\na = 1/0;\n       ^ bad constant expression");
-  EXPECT_EQ(load_error("a = 1/(2-2);"), "t.cal, line 1:\na = 1/(2-2);\n           ^ bad constant expression");
+  EXPECT_EQ(load_error("a = 1/(2-2);"),
+            "t.cal, line 1:\na = 1/(2-2);\n           ^ bad constant expression");
   EXPECT_EQ(load_error("a = x/0;"), "t.cal, line 1:\na = x/0;\n       ^ divide by zero constant");
   EXPECT_EQ(load_error("a = 1e;"), "t.cal, line 1:\na = 1e;\n      ^ missing exponent");
   EXPECT_EQ(load_error("a = .;"), "t.cal, line 1:\na = .;\n     ^ badly formed number");
@@ -268,8 +270,8 @@ TEST_F(Calc, Contexts) {
   prog.load_string("k = 2; A1 = 100; g` = 5; `h = 6;", "mine.cal", "mine");
   EXPECT_EQ(ev.eval(prog.parse_expression("k * g + h", "mine")), 16);
   EXPECT_EQ(error_of("k"), "k: undefined variable"); // local to the context
-  EXPECT_EQ(eval("g"), 5);                          // defined global with a trailing `
-  EXPECT_EQ(eval("k`mine"), 2);                     // explicit context
+  EXPECT_EQ(eval("g"), 5);                           // defined global with a trailing `
+  EXPECT_EQ(eval("k`mine"), 2);                      // explicit context
   ev.set_args({1});
   EXPECT_EQ(eval("A1"), 1); // the global A1 of rayinit.cal is untouched
   EXPECT_EQ(ev.eval(prog.parse_expression("A1", "mine")), 100);

@@ -32,7 +32,7 @@ class Program;
 class CodeGenerator {
 public:
   struct Options {
-    int recursion_depth = 32; // nesting levels generated for recursive functions
+    int recursion_depth = 16;  // nesting levels generated for recursive functions
     int max_functions = 20000; // generated functions before giving up (runaway specialisation)
   };
 

@@ -9,12 +9,13 @@
 /* Slots of rc_calc_ray.v. Slots 0..26 are Radiance's channels $1..$27 (channel = slot + 1);
  * the rest are the material-specific variables of calc-language.md §5.2. */
 #define RC_CALC_RAY_VARS(X)                                                                        \
-  X(DX, "Dx") X(DY, "Dy") X(DZ, "Dz") X(NX, "Nx") X(NY, "Ny") X(NZ, "Nz") X(PX, "Px")             \
-  X(PY, "Py") X(PZ, "Pz") X(T, "T") X(RDOT, "Rdot") X(S, "S") X(TX, "Tx") X(TY, "Ty")             \
-  X(TZ, "Tz") X(IX, "Ix") X(IY, "Iy") X(IZ, "Iz") X(JX, "Jx") X(JY, "Jy") X(JZ, "Jz")             \
-  X(KX, "Kx") X(KY, "Ky") X(KZ, "Kz") X(TS, "Ts") X(LU, "Lu") X(LV, "Lv") X(NXP, "NxP")           \
-  X(NYP, "NyP") X(NZP, "NzP") X(RDOTP, "RdotP") X(CRP, "CrP") X(CGP, "CgP") X(CBP, "CbP")         \
-  X(DXA, "DxA") X(DYA, "DyA") X(DZA, "DzA")
+  X(DX, "Dx")                                                                                      \
+  X(DY, "Dy") X(DZ, "Dz") X(NX, "Nx") X(NY, "Ny") X(NZ, "Nz") X(PX, "Px") X(PY, "Py") X(PZ, "Pz")  \
+      X(T, "T") X(RDOT, "Rdot") X(S, "S") X(TX, "Tx") X(TY, "Ty") X(TZ, "Tz") X(IX, "Ix")          \
+          X(IY, "Iy") X(IZ, "Iz") X(JX, "Jx") X(JY, "Jy") X(JZ, "Jz") X(KX, "Kx") X(KY, "Ky")      \
+              X(KZ, "Kz") X(TS, "Ts") X(LU, "Lu") X(LV, "Lv") X(NXP, "NxP") X(NYP, "NyP")          \
+                  X(NZP, "NzP") X(RDOTP, "RdotP") X(CRP, "CrP") X(CGP, "CgP") X(CBP, "CbP")        \
+                      X(DXA, "DxA") X(DYA, "DyA") X(DZA, "DzA")
 
 #define RC_CALC_SLOT_ENTRY(id, name) RC_CALC_##id,
 enum rc_calc_slot { RC_CALC_RAY_VARS(RC_CALC_SLOT_ENTRY) RC_CALC_NSLOTS };
@@ -27,10 +28,10 @@ enum rc_calc_slot { RC_CALC_RAY_VARS(RC_CALC_SLOT_ENTRY) RC_CALC_NSLOTS };
 
 /* Error bits a generated function ORs into rc_calc_env.error (Radiance prints a warning and
  * carries on with 0; the device cannot print, the caller reports). */
-#define RC_CALC_ERR_DIVIDE 1  /* division by zero: result 0 */
-#define RC_CALC_ERR_POWER 2   /* x^y not finite: result 0 */
-#define RC_CALC_ERR_DOMAIN 4  /* library function not finite / out of domain: result 0 */
-#define RC_CALC_ERR_DEPTH 8   /* recursion deeper than the generated copies: result 0 */
+#define RC_CALC_ERR_DIVIDE 1    /* division by zero: result 0 */
+#define RC_CALC_ERR_POWER 2     /* x^y not finite: result 0 */
+#define RC_CALC_ERR_DOMAIN 4    /* library function not finite / out of domain: result 0 */
+#define RC_CALC_ERR_DEPTH 8     /* recursion deeper than the generated copies: result 0 */
 #define RC_CALC_ERR_ARGUMENT 16 /* arg(n) with n beyond the primitive's real arguments: 0 */
 
 typedef struct rc_calc_ray {

@@ -34,8 +34,7 @@ public:
   double eval(const Expression& e);
   double eval(const Node& n, const std::string& context = "");
   double variable(std::string_view name, const std::string& context = "");
-  double call(std::string_view name, std::span<const double> args,
-              const std::string& context = "");
+  double call(std::string_view name, std::span<const double> args, const std::string& context = "");
 
   // Deepest nesting of user-function calls before evaluation stops with a FatalError (Radiance
   // has no limit and overflows the stack).

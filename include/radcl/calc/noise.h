@@ -10,13 +10,15 @@
 
 #ifdef __OPENCL_C_VERSION__
 #define RC_NOISE_TABLE constant int
-#define RC_NOISE_FN static inline
+#define RC_NOISE_FN
+#define RC_NOISE_BIG __attribute__((noinline))
 typedef long rc_noise_i64;
 typedef ulong rc_noise_u64;
 #else
 #include <math.h>
 #define RC_NOISE_TABLE static const int
 #define RC_NOISE_FN static inline
+#define RC_NOISE_BIG static inline
 typedef long long rc_noise_i64;
 typedef unsigned long long rc_noise_u64;
 #endif
@@ -26,25 +28,25 @@ typedef unsigned long long rc_noise_u64;
 
 /* Perlin's reference permutation (Improving Noise, SIGGRAPH 2002). */
 RC_NOISE_TABLE rc_noise_perm[256] = {
-    151, 160, 137, 91, 90, 15, 131, 13, 201, 95, 96, 53, 194, 233, 7, 225,
-    140, 36, 103, 30, 69, 142, 8, 99, 37, 240, 21, 10, 23, 190, 6, 148,
-    247, 120, 234, 75, 0, 26, 197, 62, 94, 252, 219, 203, 117, 35, 11, 32,
-    57, 177, 33, 88, 237, 149, 56, 87, 174, 20, 125, 136, 171, 168, 68, 175,
-    74, 165, 71, 134, 139, 48, 27, 166, 77, 146, 158, 231, 83, 111, 229, 122,
-    60, 211, 133, 230, 220, 105, 92, 41, 55, 46, 245, 40, 244, 102, 143, 54,
-    65, 25, 63, 161, 1, 216, 80, 73, 209, 76, 132, 187, 208, 89, 18, 169,
-    200, 196, 135, 130, 116, 188, 159, 86, 164, 100, 109, 198, 173, 186, 3, 64,
-    52, 217, 226, 250, 124, 123, 5, 202, 38, 147, 118, 126, 255, 82, 85, 212,
-    207, 206, 59, 227, 47, 16, 58, 17, 182, 189, 28, 42, 223, 183, 170, 213,
-    119, 248, 152, 2, 44, 154, 163, 70, 221, 153, 101, 155, 167, 43, 172, 9,
-    129, 22, 39, 253, 19, 98, 108, 110, 79, 113, 224, 232, 178, 185, 112, 104,
-    218, 246, 97, 228, 251, 34, 242, 193, 238, 210, 144, 12, 191, 179, 162, 241,
-    81, 51, 145, 235, 249, 14, 239, 107, 49, 192, 214, 31, 181, 199, 106, 157,
-    184, 84, 204, 176, 115, 121, 50, 45, 127, 4, 150, 254, 138, 236, 205, 93,
-    222, 114, 67, 29, 24, 72, 243, 141, 128, 195, 78, 66, 215, 61, 156, 180,
+    151, 160, 137, 91,  90,  15,  131, 13,  201, 95,  96,  53,  194, 233, 7,   225, 140, 36,  103,
+    30,  69,  142, 8,   99,  37,  240, 21,  10,  23,  190, 6,   148, 247, 120, 234, 75,  0,   26,
+    197, 62,  94,  252, 219, 203, 117, 35,  11,  32,  57,  177, 33,  88,  237, 149, 56,  87,  174,
+    20,  125, 136, 171, 168, 68,  175, 74,  165, 71,  134, 139, 48,  27,  166, 77,  146, 158, 231,
+    83,  111, 229, 122, 60,  211, 133, 230, 220, 105, 92,  41,  55,  46,  245, 40,  244, 102, 143,
+    54,  65,  25,  63,  161, 1,   216, 80,  73,  209, 76,  132, 187, 208, 89,  18,  169, 200, 196,
+    135, 130, 116, 188, 159, 86,  164, 100, 109, 198, 173, 186, 3,   64,  52,  217, 226, 250, 124,
+    123, 5,   202, 38,  147, 118, 126, 255, 82,  85,  212, 207, 206, 59,  227, 47,  16,  58,  17,
+    182, 189, 28,  42,  223, 183, 170, 213, 119, 248, 152, 2,   44,  154, 163, 70,  221, 153, 101,
+    155, 167, 43,  172, 9,   129, 22,  39,  253, 19,  98,  108, 110, 79,  113, 224, 232, 178, 185,
+    112, 104, 218, 246, 97,  228, 251, 34,  242, 193, 238, 210, 144, 12,  191, 179, 162, 241, 81,
+    51,  145, 235, 249, 14,  239, 107, 49,  192, 214, 31,  181, 199, 106, 157, 184, 84,  204, 176,
+    115, 121, 50,  45,  127, 4,   150, 254, 138, 236, 205, 93,  222, 114, 67,  29,  24,  72,  243,
+    141, 128, 195, 78,  66,  215, 61,  156, 180,
 };
 
-RC_NOISE_FN int rc_noise_p(int i) { return rc_noise_perm[i & 0xff]; }
+RC_NOISE_FN int rc_noise_p(int i) {
+  return rc_noise_perm[i & 0xff];
+}
 
 RC_NOISE_FN RC_NOISE_REAL rc_noise_fade(RC_NOISE_REAL t) {
   return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
@@ -74,7 +76,7 @@ RC_NOISE_FN int rc_noise_wrap(RC_NOISE_REAL c) {
   return (int)(c - 256.0 * floor(c / 256.0)) & 0xff;
 }
 
-RC_NOISE_FN RC_NOISE_REAL rc_noise_perlin(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_NOISE_REAL z) {
+RC_NOISE_BIG RC_NOISE_REAL rc_noise_perlin(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_NOISE_REAL z) {
   RC_NOISE_REAL cx = rc_noise_cell(x), cy = rc_noise_cell(y), cz = rc_noise_cell(z);
   x -= cx;
   y -= cy;
@@ -101,9 +103,9 @@ RC_NOISE_FN RC_NOISE_REAL rc_noise_perlin(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_N
 RC_NOISE_FN RC_NOISE_REAL rc_noise3(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_NOISE_REAL z, int i) {
   RC_NOISE_REAL f = rc_noise_perlin(x, y, z);
   if (i == 3) return f;
-  RC_NOISE_REAL back = rc_noise_perlin(x - (i == 0 ? RC_NOISE_EPS : 0.0),
-                                       y - (i == 1 ? RC_NOISE_EPS : 0.0),
-                                       z - (i == 2 ? RC_NOISE_EPS : 0.0));
+  RC_NOISE_REAL back =
+      rc_noise_perlin(x - (i == 0 ? RC_NOISE_EPS : 0.0), y - (i == 1 ? RC_NOISE_EPS : 0.0),
+                      z - (i == 2 ? RC_NOISE_EPS : 0.0));
   return (f - back) / RC_NOISE_EPS;
 }
 
@@ -119,7 +121,7 @@ RC_NOISE_FN RC_NOISE_REAL rc_noise_frand3(rc_noise_i64 x, rc_noise_i64 y, rc_noi
   return rc_noise_frand(17 * x + 23 * y + 29 * z);
 }
 
-RC_NOISE_FN RC_NOISE_REAL rc_fnoise3(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_NOISE_REAL z) {
+RC_NOISE_BIG RC_NOISE_REAL rc_fnoise3(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_NOISE_REAL z) {
   RC_NOISE_REAL p[3] = {x, y, z};
   rc_noise_i64 step = 2000; /* 1 / RC_NOISE_EPS lattice steps per unit */
   rc_noise_i64 target[3], corner[3], v[3];
