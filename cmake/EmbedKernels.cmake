@@ -2,7 +2,9 @@
 # (include/radcl/*.h) into the executables, so a moved or installed binary needs no source tree.
 file(GLOB_RECURSE RADCL_KERNEL_FILES CONFIGURE_DEPENDS
      ${PROJECT_SOURCE_DIR}/kernels/*.cl ${PROJECT_SOURCE_DIR}/kernels/*.h)
-file(GLOB RADCL_SHARED_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/include/radcl/*.h)
+file(GLOB RADCL_SHARED_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/include/radcl/*.h
+     ${PROJECT_SOURCE_DIR}/include/radcl/calc/device_context.h
+     ${PROJECT_SOURCE_DIR}/include/radcl/calc/noise.h)
 set(RADCL_EMBEDDED_CPP ${CMAKE_BINARY_DIR}/generated/embedded_kernels.cpp)
 # Called from the directory that owns the target using the file (custom-command outputs are
 # visible only there).

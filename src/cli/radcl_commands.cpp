@@ -8,6 +8,8 @@ std::span<const Command> commands() {
        cmd_ambient},
       {"devices", "list OpenCL devices (RADCL_DEVICE selects one); --check tests each",
        cmd_devices},
+      {"calc", "evaluate .cal expressions (-f file, -e statements, -r rayinit.cal, -c OpenCL C)",
+       cmd_calc},
       {"scene", "summarise a scene (octree or .rad files); --list prints every object", cmd_scene},
   };
   return kCommands;

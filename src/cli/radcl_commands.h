@@ -14,6 +14,7 @@ struct Command {
 std::span<const Command> commands();
 
 int cmd_ambient(int argc, char** argv);
+int cmd_calc(int argc, char** argv);
 int cmd_devices(int argc, char** argv);
 int cmd_scene(int argc, char** argv);
 
