@@ -62,8 +62,13 @@ typedef struct rc_scene_args {
   global const rc_source* sources;
   global const float4* verts;
   global const rc_mirror* mirrors;
+  global const rc_pattern* patterns;
   rc_params params; /* a private copy: read on every sample */
 } rc_scene_args;
+
+#ifdef RADCL_HAS_PATTERNS
+#include "render/patterns.cl"
+#endif
 
 /* Where one hit writes: counts in count mode, records in write mode. */
 typedef struct rc_out {
@@ -79,6 +84,8 @@ typedef struct rc_out {
   global const uint* super;
   uint nhemi; /* hemispheres sampled so far by this ray */
   uint child; /* sample number of the next child (keys its random numbers) */
+  float3 pcol; /* patterns' colour at the hit (Radiance's r->pcol) */
+  float3 pert; /* textures' normal perturbation at the hit (r->pert), world space */
   uint newclip;     /* antimatter: clip set of transmitted children (Radiance's newcset) */
   uint slots;       /* antimatter: crossing counters a transmission through the hit changes */
   int side;         /* and by how much: +1 through the front, -1 through the back */
@@ -93,6 +100,8 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->super = 0;
   o->nhemi = 0;
   o->child = 0;
+  o->pcol = (float3)(1.0f);
+  o->pert = (float3)(0.0f);
   o->newclip = 0u;
   o->slots = 0u;
   o->side = 0;
@@ -410,8 +419,13 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
   global const float* a = S->args + mat->args;
   float3 d = r->dir.xyz;
   float3 p = h->pos.xyz;
+  /* A texture tilts the shading normal (not where it would face away from the ray). */
+  if (any(o->pert != (float3)(0.0f))) {
+    float3 pn = normalize(n + o->pert);
+    if (-dot(d, pn) > 0.001f) n = pn;
+  }
   float cos1 = -dot(d, n);
-  float3 color = (float3)(a[0], a[1], a[2]);
+  float3 color = (float3)(a[0], a[1], a[2]) * o->pcol;
   rc_ward_iso m;
 #ifdef RADCL_HAS_METAL
   if (mat->type == RC_OBJ_METAL)
@@ -470,7 +484,7 @@ static void rc_shade_glass(const rc_scene_args* S, rc_out* o, const rc_material*
   float cos1 = -dot(d, n);
   rc_glass g = rc_glass_setup(S->args + mat->args, mat->nargs, cos1);
   if (g.hastrans)
-    rc_spawn(o, r, h->pos.xyz, d, g.trans, RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
+    rc_spawn(o, r, h->pos.xyz, d, g.trans * o->pcol, RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
              r->ambient_depth);
   rc_spawn(o, r, h->pos.xyz, d + 2.0f * cos1 * n, g.refl, RC_RAY_REFLECTED, P->spec.z, P, key, 8,
            r->ambient_depth);
@@ -578,6 +592,9 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   /* illum: a source for shadow rays aimed at it, otherwise its alternate material (or
    * nothing: the ray passes through). */
   if (mat.type == RC_OBJ_ILLUM && mat.alt != RC_NONE) mat = S->materials[mat.alt];
+#ifdef RADCL_HAS_PATTERNS
+  if (mat.npatterns) rc_apply_patterns(S, &mat, r.dir.xyz, &h, &o->pcol, &o->pert);
+#endif
   rc_apply_medium(o, &r, rc_hit_medium(S, o->cext, &mat, r.dir.xyz, &h), h.pos.w);
   float3 coef = r.coef.xyz;
   if (mat.type == RC_OBJ_ILLUM) { /* no alternate */
@@ -585,7 +602,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
     return;
   }
   if (mat.type == RC_OBJ_LIGHT || mat.type == RC_OBJ_GLOW || mat.type == RC_OBJ_SPOTLIGHT) {
-    o->immediate += rc_light_emission(S, &mat, &r, &h, kind) * coef;
+    o->immediate += rc_light_emission(S, &mat, &r, &h, kind) * coef * o->pcol;
     return;
   }
   if (h.pos.w < 0.0f) return; /* a distant source with a non-emitting material */
@@ -634,7 +651,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   case RC_OBJ_MIRROR: {
     if (!h.front) break; /* the back of a mirror is black */
     global const float* a = S->args + mat.args;
-    float3 c = (float3)(a[0], a[1], a[2]);
+    float3 c = (float3)(a[0], a[1], a[2]) * o->pcol;
     float cos1 = -dot(r.dir.xyz, n);
     rc_spawn(o, &r, h.pos.xyz, r.dir.xyz + 2.0f * cos1 * n, c, RC_RAY_REFLECTED, P->spec.z, P, key,
              8, r.ambient_depth);
@@ -649,7 +666,8 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
 #define RC_SCENE_PARAMS                                                                            \
   global const rc_surface *surfaces, global const rc_material *materials,                          \
       global const float *args, global const rc_source *sources, global const float4 *verts,       \
-      global const rc_mirror *mirrors, global const rc_params *params
+      global const rc_mirror *mirrors, global const rc_params *params,                               \
+      global const rc_pattern *patterns
 
 #define RC_SCENE_INIT                                                                              \
   rc_scene_args S;                                                                                 \
@@ -659,6 +677,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   S.sources = sources;                                                                             \
   S.verts = verts;                                                                                 \
   S.mirrors = mirrors;                                                                             \
+  S.patterns = patterns;                                                                           \
   S.params = *params;
 
 kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
@@ -795,6 +814,10 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
         return RC_SH_BLOCKED;
       if (m.alt != RC_NONE) m = S->materials[m.alt];
     }
+    float3 pcol = (float3)(1.0f), pert = (float3)(0.0f);
+#ifdef RADCL_HAS_PATTERNS
+    if (m.npatterns) rc_apply_patterns(S, &m, d, h, &pcol, &pert);
+#endif
     cext = rc_hit_medium(S, cext, &m, d, h);
     next_cext = cext;
     int back_pass = !h->front && !(P->flags & RC_PF_BV);
@@ -810,7 +833,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
 #ifdef RADCL_HAS_TRANS
     case RC_OBJ_TRANS: {
       if (back_pass) break;
-      rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]), a, -dot(d, n));
+      rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]) * pcol, a, -dot(d, n));
       if (!rc_trans_pure(&w)) return RC_SH_BLOCKED;
       coef = w.tcolor * w.tspec;
       break;
@@ -821,7 +844,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       if (back_pass) break;
       rc_glass g = rc_glass_setup(a, m.nargs, -dot(d, n));
       if (!g.hastrans) return RC_SH_BLOCKED;
-      coef = g.trans;
+      coef = g.trans * pcol;
       break;
     }
 #endif

@@ -1,5 +1,8 @@
 #include "radcl/render/compiled_scene.h"
 
+#include "radcl/render/pattern_compiler.h"
+#include <tuple>
+
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -57,7 +60,7 @@ bool real_count_ok(rc_object_type t, std::size_t n) {
 class Compiler {
 public:
   Compiler(const scene::LoadedScene& ls, const geometry::SceneGeometry& geom, bool shading)
-      : ls_(ls), geom_(geom), shading_(shading) {}
+      : ls_(ls), geom_(geom), shading_(shading), patterns_(geom.centre()) {}
 
   CompiledScene run() {
     const auto& placements = geom_.placements();
@@ -71,6 +74,10 @@ public:
           add_surface(pl, static_cast<std::int32_t>(i));
     }
     assign_clip_bits();
+    if (!patterns_.empty()) {
+      out_.features.define("RADCL_HAS_PATTERNS");
+      out_.features.add_code(patterns_.source());
+    }
     // -i/-I: plastic (pi, pi, pi) without specular reflects radiance equal to irradiance.
     out_.irradiance_material = static_cast<std::uint32_t>(out_.materials.size());
     const float pi = std::numbers::pi_v<float>;
@@ -97,6 +104,64 @@ private:
   std::vector<ModKey> surface_mod_;          // direct modifier of each compiled surface
   std::map<ModKey, std::uint32_t> clip_bit_; // clipped modifiers and their bit in rc_ray.clip
   std::vector<std::uint32_t> slot_mask_;     // per crossing counter: its antimatter's list
+  PatternCompiler patterns_;
+  // Materials with patterns: (scene, material, the patterns' objects) -> compiled material.
+  std::map<std::tuple<const scene::SceneDescription*, std::int32_t, std::vector<std::int32_t>>,
+           std::uint32_t>
+      patterned_;
+
+  // The patterns and textures that apply to a surface whose modifier is `mod`: those between it
+  // and its material, then the material's own (Radiance's rayshade, then raytexture). Types not
+  // handled yet are fatal; a mixture among them too.
+  std::vector<std::int32_t> chain_patterns(const scene::SceneDescription& sd, std::int32_t mod) {
+    std::vector<std::int32_t> out;
+    bool past_material = false;
+    for (std::size_t steps = 0; mod != scene::kVoid && steps <= sd.objects.size(); ++steps) {
+      std::int32_t t = scene::alias_target(sd, mod);
+      if (t == scene::kVoid) break;
+      const scene::Object& o = sd.objects[t];
+      if (scene::is_material(o.type)) {
+        if (past_material) break; // a second material is never reached
+        past_material = true;
+        mod = o.modifier;
+        continue;
+      }
+      if (!PatternCompiler::supported(static_cast<rc_object_type>(o.type)))
+        throw FatalError(std::string(scene::type_name(o.type)) + " \"" + o.name +
+                         "\" is not supported yet");
+      out.push_back(t);
+      mod = sd.objects[mod].modifier;
+    }
+    return out;
+  }
+
+  // The compiled material of a surface with modifier `mod`, `m` its first material: the plain
+  // material, or a copy that carries its patterns.
+  std::uint32_t shading_material(const scene::SceneDescription& sd, std::int32_t mod,
+                                 std::int32_t m, const geometry::Placement& pl) {
+    std::uint32_t base = material(sd, m);
+    if (!shading_ || base == RC_NONE) return base;
+    std::vector<std::int32_t> pats = chain_patterns(sd, mod);
+    if (pats.empty()) return base;
+    auto key = std::make_tuple(&sd, m, pats);
+    if (auto it = patterned_.find(key); it != patterned_.end()) return it->second;
+    rc_material copy = out_.materials[base];
+    copy.patterns = static_cast<std::uint32_t>(out_.patterns.size());
+    copy.npatterns = static_cast<std::uint32_t>(pats.size());
+    // A pattern inside an instance or mesh is placed with it.
+    bool placed = &sd == pl.scene || (pl.mesh && &sd == &pl.mesh->objects);
+    std::array<std::array<double, 4>, 4> id{
+        {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    for (std::int32_t p : pats) {
+      out_.patterns.push_back(
+          patterns_.compile(sd, p, placed ? pl.to_world : id, placed ? pl.scale : 1.0, out_.args));
+      out_.features.add(static_cast<rc_object_type>(sd.objects[p].type));
+    }
+    out_.materials.push_back(copy);
+    auto idx = static_cast<std::uint32_t>(out_.materials.size() - 1);
+    patterned_[key] = idx;
+    return idx;
+  }
 
   std::uint32_t clip_bit(const ModKey& key) {
     auto it = clip_bit_.find(key);
@@ -243,7 +308,7 @@ private:
       surf = pl.shade_object;
     }
     std::int32_t m = scene::first_material(*msd, surf);
-    s.material = material(*msd, m);
+    s.material = shading_material(*msd, msd->objects[surf].modifier, m, pl);
     out_.features.add(o.type);
     std::int32_t mod = msd->objects[surf].modifier;
     push_surface(s, msd->objects[surf].name, mod == scene::kVoid ? "void" : msd->objects[mod].name,
@@ -261,14 +326,15 @@ private:
       ModKey direct{nullptr, scene::kVoid};
       if (pl.shade_object >= 0) { // the mesh primitive's own modifier overrides its faces'
         std::int32_t m = scene::first_material(*pl.shade_scene, pl.shade_object);
-        s.material = material(*pl.shade_scene, m);
+        s.material = shading_material(*pl.shade_scene,
+                                      pl.shade_scene->objects[pl.shade_object].modifier, m, pl);
         std::int32_t mo = pl.shade_scene->objects[pl.shade_object].modifier;
         direct = {pl.shade_scene, mo};
         if (mo != scene::kVoid) mod = pl.shade_scene->objects[mo].name;
         if (m != scene::kVoid) mat = pl.shade_scene->objects[m].name;
       } else if (i >= 0) {
         std::int32_t m = scene::first_material_from(mesh.objects, i);
-        s.material = material(mesh.objects, m);
+        s.material = shading_material(mesh.objects, i, m, pl);
         mod = mesh.materials[i];
         direct = {&mesh.objects, i};
         if (m != scene::kVoid) mat = mesh.objects.objects[m].name;

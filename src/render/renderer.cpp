@@ -52,7 +52,9 @@ struct Renderer::Impl {
   CompiledScene cs;
   device::Program program;
   device::Kernel count, shade, accumulate, shadow_step;
-  device::Buffer surfaces, materials, args, sources, verts, mirrors, params;
+  device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
+  // Kernel arguments set_scene_args() fills; a kernel's next argument follows them.
+  static constexpr unsigned kSceneArgs = 8;
   Vec3d centre;
   RenderStats stats;
   // -as: hemisphere samples tally per division until the super-samples are decided.
@@ -98,7 +100,7 @@ struct Renderer::Impl {
         shade(program.kernel("rc_shade")), accumulate(program.kernel("rc_accumulate")),
         shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
         materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
-        centre(geom.centre()) {
+        patterns(upload(c, cs.patterns)), centre(geom.centre()) {
     if (st.ambient_list != RenderSettings::AmbientList::None) {
       mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
                         st.ambient_names);
@@ -166,7 +168,8 @@ struct Renderer::Impl {
         .arg(first + 3, sources)
         .arg(first + 4, verts)
         .arg(first + 5, mirrors)
-        .arg(first + 6, params);
+        .arg(first + 6, params)
+        .arg(first + 7, patterns);
   }
 
   // The device record of a geometry answer; a miss may still hit a distant source.
@@ -275,7 +278,11 @@ struct Renderer::Impl {
       std::uint32_t un = static_cast<std::uint32_t>(n);
       count.arg(0, brays).arg(1, bhits).arg(2, un);
       set_scene_args(count, 3);
-      count.arg(10, bnshadow).arg(11, bnspawn).arg(12, 0u).arg(13, bnspawn).arg(14, bnspawn);
+      count.arg(kSceneArgs + 3, bnshadow)
+          .arg(kSceneArgs + 4, bnspawn)
+          .arg(kSceneArgs + 5, 0u)
+          .arg(kSceneArgs + 6, bnspawn)
+          .arg(kSceneArgs + 7, bnspawn);
       ctx.run(count, n);
       std::vector<std::uint32_t> nsh = bnshadow.to_vector<std::uint32_t>(n);
       std::vector<std::uint32_t> nsp = bnspawn.to_vector<std::uint32_t>(n);
@@ -394,7 +401,11 @@ struct Renderer::Impl {
     device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
     count.arg(0, brays).arg(1, bhits).arg(2, un);
     set_scene_args(count, 3);
-    count.arg(10, bnshadow).arg(11, bnspawn).arg(12, 1u).arg(13, boff).arg(14, bdata);
+    count.arg(kSceneArgs + 3, bnshadow)
+        .arg(kSceneArgs + 4, bnspawn)
+        .arg(kSceneArgs + 5, 1u)
+        .arg(kSceneArgs + 6, boff)
+        .arg(kSceneArgs + 7, bdata);
     ctx.run(count, n);
     std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
     std::vector<std::uint32_t> counts = spawn_off;
@@ -407,8 +418,12 @@ struct Renderer::Impl {
     device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
     shade.arg(0, brays).arg(1, bhits).arg(2, un);
     set_scene_args(shade, 3);
-    shade.arg(10, bsoff).arg(11, bpoff).arg(12, bshadows).arg(13, bspawned).arg(14, bimm);
-    shade.arg(15, 1u).arg(16, boff).arg(17, bdata);
+    shade.arg(kSceneArgs + 3, bsoff)
+        .arg(kSceneArgs + 4, bpoff)
+        .arg(kSceneArgs + 5, bshadows)
+        .arg(kSceneArgs + 6, bspawned)
+        .arg(kSceneArgs + 7, bimm);
+    shade.arg(kSceneArgs + 8, 1u).arg(kSceneArgs + 9, boff).arg(kSceneArgs + 10, bdata);
     ctx.run(shade, n);
     std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
     for (std::size_t i = 0; i < n; ++i)
@@ -443,8 +458,12 @@ struct Renderer::Impl {
     device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
     shade.arg(0, brays).arg(1, bhits).arg(2, un);
     set_scene_args(shade, 3);
-    shade.arg(10, bsoff).arg(11, bpoff).arg(12, bshadows).arg(13, bspawned).arg(14, bimm);
-    shade.arg(15, 0u).arg(16, bsoff).arg(17, bsoff);
+    shade.arg(kSceneArgs + 3, bsoff)
+        .arg(kSceneArgs + 4, bpoff)
+        .arg(kSceneArgs + 5, bshadows)
+        .arg(kSceneArgs + 6, bspawned)
+        .arg(kSceneArgs + 7, bimm);
+    shade.arg(kSceneArgs + 8, 0u).arg(kSceneArgs + 9, bsoff).arg(kSceneArgs + 10, bsoff);
     ctx.run(shade, n);
 
     std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);

@@ -19,7 +19,8 @@ namespace radcl::render {
 struct CompiledScene {
   std::vector<rc_surface> surfaces;
   std::vector<rc_material> materials;
-  std::vector<float> args; // material real arguments, rc_material::args indexes them
+  std::vector<float> args;          // material real arguments, rc_material::args indexes them
+  std::vector<rc_pattern> patterns; // per material, a run of its patterns (rc_material::patterns)
   CompiledSources sources;
   device::FeatureSet features;
 

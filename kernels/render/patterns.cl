@@ -1,0 +1,79 @@
+/* Patterns and textures (scene-format.md §4): the ray variables of calc-language.md §5.1 in
+ * each pattern's function coordinates, then its generated expressions through the scene's
+ * dispatcher rc_pattern_call(). A compute error leaves the colour (or normal) unchanged, as
+ * Radiance does after its warning. */
+
+/* Point, direction and normal of a hit mapped into a pattern's function space. */
+static void rc_pattern_ray(global const float* x, float3 d, const rc_hit* h, rc_calc_env* e) {
+  float3 r0 = (float3)(x[0], x[1], x[2]), r1 = (float3)(x[3], x[4], x[5]);
+  float3 r2 = (float3)(x[6], x[7], x[8]), tr = (float3)(x[9], x[10], x[11]);
+  float sc = x[12];
+  int distant = h->pos.w < 0.0f;
+  float3 nw = distant ? -d : h->nrm.xyz;
+  float3 p = distant ? (float3)(0.0f) : h->pos.x * r0 + h->pos.y * r1 + h->pos.z * r2 + tr;
+  float3 df = normalize(d.x * r0 + d.y * r1 + d.z * r2);
+  float3 nf = normalize(nw.x * r0 + nw.y * r1 + nw.z * r2);
+  float t = distant ? 1e10f : h->pos.w;
+  for (int i = 0; i < RC_CALC_SLOT_CAPACITY; ++i)
+    e->ray.v[i] = 0.0f;
+  e->ray.v[RC_CALC_DX] = df.x;
+  e->ray.v[RC_CALC_DY] = df.y;
+  e->ray.v[RC_CALC_DZ] = df.z;
+  e->ray.v[RC_CALC_NX] = nf.x;
+  e->ray.v[RC_CALC_NY] = nf.y;
+  e->ray.v[RC_CALC_NZ] = nf.z;
+  if (!distant) {
+    e->ray.v[RC_CALC_PX] = p.x;
+    e->ray.v[RC_CALC_PY] = p.y;
+    e->ray.v[RC_CALC_PZ] = p.z;
+  }
+  e->ray.v[RC_CALC_T] = t * sc;
+  e->ray.v[RC_CALC_TS] = t * sc;
+  e->ray.v[RC_CALC_RDOT] = clamp(-dot(d, nw), -1.0f, 1.0f);
+  e->ray.v[RC_CALC_S] = sc;
+  e->ray.v[RC_CALC_TX] = x[22];
+  e->ray.v[RC_CALC_TY] = x[23];
+  e->ray.v[RC_CALC_TZ] = x[24];
+  float3 iv = r0 / sc, jv = r1 / sc, kv = r2 / sc;
+  e->ray.v[RC_CALC_IX] = iv.x;
+  e->ray.v[RC_CALC_IY] = iv.y;
+  e->ray.v[RC_CALC_IZ] = iv.z;
+  e->ray.v[RC_CALC_JX] = jv.x;
+  e->ray.v[RC_CALC_JY] = jv.y;
+  e->ray.v[RC_CALC_JZ] = jv.z;
+  e->ray.v[RC_CALC_KX] = kv.x;
+  e->ray.v[RC_CALC_KY] = kv.y;
+  e->ray.v[RC_CALC_KZ] = kv.z;
+}
+
+/* Applies the material's patterns and textures for a ray of direction d meeting h: multiplies
+ * *pcol by their colours and adds their normal perturbations (world space) to *pert. */
+static void rc_apply_patterns(const rc_scene_args* S, const rc_material* m, float3 d,
+                              const rc_hit* h, float3* pcol, float3* pert) {
+  for (uint k = 0; k < m->npatterns; ++k) {
+    rc_pattern pt = S->patterns[m->patterns + k];
+    global const float* x = S->args + pt.xform;
+    rc_calc_env e;
+    rc_pattern_ray(x, d, h, &e);
+    e.args = S->args;
+    e.ray.nargs = (int)pt.nargs;
+    e.ray.arg_base = (int)pt.args;
+    e.error = 0;
+    if (pt.type == RC_OBJ_BRIGHTFUNC) {
+      float v = (float)rc_pattern_call(pt.func[0], &e);
+      if (!e.error) *pcol *= v;
+    } else if (pt.type == RC_OBJ_COLORFUNC) {
+      float3 c = (float3)((float)rc_pattern_call(pt.func[0], &e),
+                          (float)rc_pattern_call(pt.func[1], &e),
+                          (float)rc_pattern_call(pt.func[2], &e));
+      if (!e.error) *pcol *= c;
+    } else if (pt.type == RC_OBJ_TEXFUNC) {
+      float3 v = (float3)((float)rc_pattern_call(pt.func[0], &e),
+                          (float)rc_pattern_call(pt.func[1], &e),
+                          (float)rc_pattern_call(pt.func[2], &e));
+      float3 f0 = (float3)(x[13], x[14], x[15]), f1 = (float3)(x[16], x[17], x[18]);
+      float3 f2 = (float3)(x[19], x[20], x[21]);
+      if (!e.error) *pert += v.x * f0 + v.y * f1 + v.z * f2;
+    }
+  }
+}
