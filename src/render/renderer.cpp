@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <unordered_map>
 #include <vector>
@@ -530,8 +529,6 @@ struct Renderer::Impl {
       bslot_sh.unmap(const_cast<rc_shadow*>(ssh));
       bslot_sp.unmap(const_cast<rc_ray*>(ssp));
     }
-    if (std::getenv("RADCL_DEBUG_SLOTS"))
-      std::fprintf(stderr, "slice %zu rays caps %u %u, %zu re-shaded\n", n, csh, csp, over.size());
     if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
     device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
     device::Buffer& bshadows = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
