@@ -129,6 +129,7 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
   }
   uint nc = o->nshadow - first;
   if (!select || nc == 0u) return;
+  rc_out_reserve(o, 1u, 0u);
   if (o->write) rc_direct_select(o->shadows + first, nc, known, P, r->coef.w);
   o->nshadow++; /* the estimate's slot */
 }

@@ -1,8 +1,9 @@
-/* The shading wave: one work-item per ray of the wave, with its host-computed hit. Two passes
- * run the same code: rc_count only counts the shadow rays and spawned rays each hit makes, the
- * host turns the counts into offsets, and rc_shade writes them there. Fixed offsets keep the
- * output order independent of scheduling, so results are bit-identical across runs, thread
- * counts and wave sizes. */
+/* The shading wave: one work-item per ray of the wave, with its host-computed hit. rc_shade
+ * writes each hit's shadow requests and spawned rays into fixed slots per ray (the host packs
+ * them in ray order); the few hits that need more room than their slots are shaded again with
+ * exact offsets. rc_count runs the same code and only counts (the -as super-sample pass sizes
+ * its output with it). Records depend only on the ray, never on where they are written, so
+ * results are bit-identical across runs, thread counts, wave sizes and slot sizes. */
 #include "radcl/device_types.h"
 #include "radcl/rng.h"
 #include "render/sources.cl"
@@ -70,10 +71,13 @@ typedef struct rc_scene_args {
 #include "render/patterns.cl"
 #endif
 
-/* Where one hit writes: counts in count mode, records in write mode. */
+/* Where one hit writes: counts in count mode, records in write mode. In write mode a hit
+ * whose records outgrow their slots (cap_shadow, cap_spawn) stops writing and only counts:
+ * the host shades it again with exact room. */
 typedef struct rc_out {
   int write;
   uint nshadow, nspawn;
+  uint cap_shadow, cap_spawn;
   global rc_shadow* shadows;
   global rc_ray* spawned;
   float3 immediate; /* contributions that need no shadow test (emission, ambient value) */
@@ -94,6 +98,7 @@ typedef struct rc_out {
 static inline void rc_out_init(rc_out* o, int write) {
   o->write = write;
   o->nshadow = o->nspawn = 0;
+  o->cap_shadow = o->cap_spawn = 0xFFFFFFFFu;
   o->immediate = (float3)(0.0f);
   o->cext = (float3)(0.0f);
   o->wfac = 1.0f;
@@ -107,9 +112,16 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->side = 0;
 }
 
+/* Write mode ends for good once `shadows` more shadow records or `spawns` more children would
+ * not fit: a partly written hit is rewritten in full later, so nothing may depend on it. */
+static inline void rc_out_reserve(rc_out* o, uint shadows, uint spawns) {
+  if (o->nshadow + shadows > o->cap_shadow || o->nspawn + spawns > o->cap_spawn) o->write = 0;
+}
+
 static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
                                   float3 contrib, const rc_ray* r, uint source) {
   if (o->super) return;
+  rc_out_reserve(o, 1u, 0u);
   if (o->write) {
     rc_shadow s;
     s.org = (float4)(org, tmin);
@@ -163,6 +175,7 @@ static inline float rc_child_weight(const rc_out* o, const rc_ray* parent, float
 static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, float3 dir, float3 coef,
                                uint kind, float tmin, float weight, uint depth,
                                uint ambient_depth) {
+  rc_out_reserve(o, 0u, 1u);
   if (o->write) {
     rc_ray r;
     r.org = (float4)(org, tmin);
@@ -694,21 +707,32 @@ kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint 
   nspawn[i] = o.nspawn;
 }
 
+/* Writes each ray's records from its offsets. Exact mode (caps of ~0u): the offsets come from
+ * rc_count. Slot mode: every ray has room for cap_shadow and cap_spawn records; the counts
+ * are written for every ray, with the top bit of nshadow set where the records did not fit. */
 kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
                      global const uint* shadow_offset, global const uint* spawn_offset,
                      global rc_shadow* shadows, global rc_ray* spawned, global float4* immediate,
                      uint super_mode, global const uint* super_offset,
-                     global const uint* super_data) {
+                     global const uint* super_data, uint cap_shadow, uint cap_spawn,
+                     global uint* nshadow, global uint* nspawn) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
   rc_out o;
   rc_out_init(&o, 1);
   if (super_mode) o.super = super_data + super_offset[i];
-  o.shadows = shadows + shadow_offset[i];
-  o.spawned = spawned + spawn_offset[i];
+  int slots = cap_shadow != 0xFFFFFFFFu;
+  o.cap_shadow = cap_shadow;
+  o.cap_spawn = cap_spawn;
+  o.shadows = shadows + (slots ? (ulong)i * cap_shadow : shadow_offset[i]);
+  o.spawned = spawned + (slots ? (ulong)i * cap_spawn : spawn_offset[i]);
   rc_shade_ray(&S, &o, rays[i], hits[i]);
   immediate[i] = (float4)(o.immediate, 0.0f);
+  if (slots) {
+    nshadow[i] = o.nshadow | (o.write ? 0u : 0x80000000u);
+    nspawn[i] = o.nspawn;
+  }
 }
 
 /* Per ray of the wave: its immediate contribution plus its unblocked shadow contributions and

@@ -33,6 +33,7 @@
 #include "radcl/render/renderer.h"
 #include "radcl/scene/loader.h"
 #include "radcl/scene/raypath.h"
+#include "radcl/util/allocator.h"
 #include "radcl/util/error.h"
 #include "render_settings.h"
 
@@ -386,5 +387,6 @@ int rpict_main(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  radcl::keep_freed_memory();
   return radcl::run_main("rpict", rpict_main, argc, argv);
 }

@@ -26,6 +26,7 @@
 #include "radcl/render/renderer.h"
 #include "radcl/scene/loader.h"
 #include "radcl/scene/raypath.h"
+#include "radcl/util/allocator.h"
 #include "radcl/util/error.h"
 #include "render_settings.h"
 
@@ -392,5 +393,6 @@ int rtrace_main(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  radcl::keep_freed_memory();
   return radcl::run_main("rtrace", rtrace_main, argc, argv);
 }

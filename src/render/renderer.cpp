@@ -80,8 +80,13 @@ struct Renderer::Impl {
     kStepState,
     kSuperOff,
     kSuperData,
+    kShadowSlots,
+    kSpawnSlots,
     kSlots
   };
+  // Room per ray in the shading pass's slots, set per wave by size_slots (any value gives the
+  // same records; a good one makes re-shading rare and keeps the slots small).
+  std::uint32_t cap_shadow = 16, cap_spawn = 2;
   std::vector<device::Buffer> pool = std::vector<device::Buffer>(kSlots);
   device::Buffer& scratch(Slot slot, std::size_t bytes) {
     bytes = std::max<std::size_t>(bytes, 16);
@@ -269,35 +274,16 @@ struct Renderer::Impl {
       if (!(first_wave && settings.irradiance_I)) trace(queue, hits, res, first_wave);
       first_wave = false;
 
-      // Count every ray's shadow and child rays, then shade in slices whose outputs fit the
-      // device's largest allocation (a slice keeps queue order, so sums stay in order).
-      device::Buffer& brays = scratch(kRays, queue);
-      device::Buffer& bhits = scratch(kHits, hits);
-      device::Buffer& bnshadow = scratch(kNShadow, n * 4);
-      device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
-      std::uint32_t un = static_cast<std::uint32_t>(n);
-      count.arg(0, brays).arg(1, bhits).arg(2, un);
-      set_scene_args(count, 3);
-      count.arg(kSceneArgs + 3, bnshadow)
-          .arg(kSceneArgs + 4, bnspawn)
-          .arg(kSceneArgs + 5, 0u)
-          .arg(kSceneArgs + 6, bnspawn)
-          .arg(kSceneArgs + 7, bnspawn);
-      ctx.run(count, n);
-      std::vector<std::uint32_t> nsh = bnshadow.to_vector<std::uint32_t>(n);
-      std::vector<std::uint32_t> nsp = bnspawn.to_vector<std::uint32_t>(n);
-      std::size_t limit = std::min<std::size_t>(ctx.info().max_alloc / 2, std::size_t{1} << 29);
+      // Shade in slices whose slots fit a modest allocation (a slice keeps queue order, so
+      // sums stay in order).
+      std::size_t limit = std::size_t{1} << 26;
       if (const char* e = std::getenv("RADCL_WAVE_BYTES")) limit = std::strtoull(e, nullptr, 10);
       std::vector<rc_ray> next;
+      size_slots(queue, hits);
       for (std::size_t a = 0; a < n;) {
-        std::size_t b = a, shadows = 0, spawned = 0;
-        while (b < n && (b == a || ((shadows + nsh[b]) * sizeof(rc_shadow) <= limit &&
-                                    (spawned + nsp[b]) * sizeof(rc_ray) <= limit))) {
-          shadows += nsh[b];
-          spawned += nsp[b];
-          ++b;
-        }
-        shade_slice(queue, hits, a, b, nsh, nsp, sums, next);
+        std::size_t per_ray = cap_shadow * sizeof(rc_shadow) + cap_spawn * sizeof(rc_ray);
+        std::size_t b = std::min(n, a + std::max<std::size_t>(256, limit / per_ray));
+        shade_slice(queue, hits, a, b, sums, next);
         a = b;
       }
       if (tree)
@@ -423,7 +409,12 @@ struct Renderer::Impl {
         .arg(kSceneArgs + 5, bshadows)
         .arg(kSceneArgs + 6, bspawned)
         .arg(kSceneArgs + 7, bimm);
-    shade.arg(kSceneArgs + 8, 1u).arg(kSceneArgs + 9, boff).arg(kSceneArgs + 10, bdata);
+    shade.arg(kSceneArgs + 8, 1u)
+        .arg(kSceneArgs + 9, boff)
+        .arg(kSceneArgs + 10, bdata)
+        .arg(kSceneArgs + 11, ~0u)
+        .arg(kSceneArgs + 12, ~0u);
+    shade.arg(kSceneArgs + 13, bsoff).arg(kSceneArgs + 14, bpoff);
     ctx.run(shade, n);
     std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
     for (std::size_t i = 0; i < n; ++i)
@@ -431,42 +422,152 @@ struct Renderer::Impl {
     next.insert(next.end(), children.begin(), children.end());
   }
 
-  // Shades rays [a, b) of the wave: writes their shadow requests and children, tests the
-  // shadows, adds each ray's total into its primary's sum, appends the children to `next`.
-  void shade_slice(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits, std::size_t a,
-                   std::size_t b, const std::vector<std::uint32_t>& nsh,
-                   const std::vector<std::uint32_t>& nsp, std::vector<Vec3d>& sums,
-                   std::vector<rc_ray>& next) {
-    std::size_t n = b - a;
-    std::vector<rc_ray> rays(queue.begin() + static_cast<long>(a),
-                             queue.begin() + static_cast<long>(b));
-    std::vector<rc_hit> hit(hits.begin() + static_cast<long>(a),
-                            hits.begin() + static_cast<long>(b));
-    std::vector<std::uint32_t> shadow_off(nsh.begin() + static_cast<long>(a),
-                                          nsh.begin() + static_cast<long>(b));
-    std::vector<std::uint32_t> spawn_off(nsp.begin() + static_cast<long>(a),
-                                         nsp.begin() + static_cast<long>(b));
-    std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
-    std::uint32_t un = static_cast<std::uint32_t>(n);
+  // Slot sizes for a wave: the counts of an even spread of its rays (at most 512 of them,
+  // counted by rc_count), enough room for about 98% of them.
+  void size_slots(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits) {
+    std::size_t n = queue.size(), stride = std::max<std::size_t>(1, n / 512);
+    std::vector<rc_ray> r;
+    std::vector<rc_hit> h;
+    for (std::size_t i = stride / 2; i < n; i += stride) {
+      r.push_back(queue[i]);
+      h.push_back(hits[i]);
+    }
+    std::size_t m = r.size();
+    std::uint32_t um = static_cast<std::uint32_t>(m);
+    device::Buffer& brays = scratch(kStepRays, r);
+    device::Buffer& bhits = scratch(kStepHits, h);
+    device::Buffer& bnshadow = scratch(kNShadow, m * 4);
+    device::Buffer& bnspawn = scratch(kNSpawn, m * 4);
+    count.arg(0, brays).arg(1, bhits).arg(2, um);
+    set_scene_args(count, 3);
+    count.arg(kSceneArgs + 3, bnshadow)
+        .arg(kSceneArgs + 4, bnspawn)
+        .arg(kSceneArgs + 5, 0u)
+        .arg(kSceneArgs + 6, bnspawn)
+        .arg(kSceneArgs + 7, bnspawn);
+    ctx.run(count, m);
+    auto quantile = [m](std::vector<std::uint32_t> v) {
+      std::size_t k = m * 98 / 100;
+      std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
+      return std::max<std::uint32_t>(1, v[k]);
+    };
+    cap_shadow = quantile(bnshadow.to_vector<std::uint32_t>(m));
+    cap_spawn = quantile(bnspawn.to_vector<std::uint32_t>(m));
+  }
 
-    device::Buffer& brays = scratch(kRays, rays);
-    device::Buffer& bhits = scratch(kHits, hit);
-    device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
-    device::Buffer& bpoff = scratch(kSpawnOff, spawn_off);
-    device::Buffer& bshadows = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
-    device::Buffer& bspawned = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
-    device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
-    shade.arg(0, brays).arg(1, bhits).arg(2, un);
+  // Shades the rays `over` (slice indices) again, their records written into exact room, and
+  // puts them in their places in the slice's packed records.
+  void reshade(const rc_ray* rays, const rc_hit* hit, const std::vector<std::uint32_t>& over,
+               const std::vector<std::uint32_t>& nsh, const std::vector<std::uint32_t>& nsp,
+               const std::vector<std::uint32_t>& shadow_off,
+               const std::vector<std::uint32_t>& spawn_off, std::vector<rc_shadow>& shadows,
+               std::vector<rc_ray>& children) {
+    std::size_t m = over.size();
+    std::vector<rc_ray> r(m);
+    std::vector<rc_hit> h(m);
+    std::vector<std::uint32_t> soff(m), poff(m);
+    for (std::size_t k = 0; k < m; ++k) {
+      r[k] = rays[over[k]];
+      h[k] = hit[over[k]];
+      soff[k] = nsh[over[k]];
+      poff[k] = nsp[over[k]];
+    }
+    std::uint32_t tsh = prefix_sum(soff), tsp = prefix_sum(poff);
+    std::uint32_t um = static_cast<std::uint32_t>(m);
+    device::Buffer& brays = scratch(kStepRays, r);
+    device::Buffer& bhits = scratch(kStepHits, h);
+    device::Buffer& bsoff = scratch(kSuperOff, soff);
+    device::Buffer& bpoff = scratch(kSuperData, poff);
+    device::Buffer& bsh = scratch(kShadows, std::size_t{tsh} * sizeof(rc_shadow));
+    device::Buffer& bsp = scratch(kSpawned, std::size_t{tsp} * sizeof(rc_ray));
+    device::Buffer& bimm = scratch(kTotal, m * sizeof(rc_float4));
+    shade.arg(0, brays).arg(1, bhits).arg(2, um);
     set_scene_args(shade, 3);
     shade.arg(kSceneArgs + 3, bsoff)
         .arg(kSceneArgs + 4, bpoff)
-        .arg(kSceneArgs + 5, bshadows)
-        .arg(kSceneArgs + 6, bspawned)
+        .arg(kSceneArgs + 5, bsh)
+        .arg(kSceneArgs + 6, bsp)
         .arg(kSceneArgs + 7, bimm);
-    shade.arg(kSceneArgs + 8, 0u).arg(kSceneArgs + 9, bsoff).arg(kSceneArgs + 10, bsoff);
-    ctx.run(shade, n);
+    shade.arg(kSceneArgs + 8, 0u)
+        .arg(kSceneArgs + 9, bsoff)
+        .arg(kSceneArgs + 10, bsoff)
+        .arg(kSceneArgs + 11, ~0u)
+        .arg(kSceneArgs + 12, ~0u);
+    shade.arg(kSceneArgs + 13, bsoff).arg(kSceneArgs + 14, bpoff);
+    ctx.run(shade, m);
+    std::vector<rc_shadow> sh = bsh.to_vector<rc_shadow>(tsh);
+    std::vector<rc_ray> sp = bsp.to_vector<rc_ray>(tsp);
+    for (std::size_t k = 0; k < m; ++k) {
+      std::copy_n(sh.data() + soff[k], nsh[over[k]], shadows.data() + shadow_off[over[k]]);
+      std::copy_n(sp.data() + poff[k], nsp[over[k]], children.data() + spawn_off[over[k]]);
+    }
+  }
 
-    std::vector<rc_shadow> shadows = bshadows.to_vector<rc_shadow>(nshadow);
+  // Shades rays [a, b) of the wave: writes their shadow requests and children, tests the
+  // shadows, adds each ray's total into its primary's sum, appends the children to `next`.
+  // One pass writes every ray's records into fixed slots; rays that did not fit are shaded
+  // again into exactly sized room. The records are packed in ray order either way.
+  void shade_slice(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits, std::size_t a,
+                   std::size_t b, std::vector<Vec3d>& sums, std::vector<rc_ray>& next) {
+    std::size_t n = b - a;
+    std::uint32_t un = static_cast<std::uint32_t>(n);
+    const rc_ray* rays = queue.data() + a;
+    const rc_hit* hit = hits.data() + a;
+    device::Buffer& brays = scratch(kRays, n * sizeof(rc_ray));
+    brays.write(rays, n * sizeof(rc_ray));
+    device::Buffer& bhits = scratch(kHits, n * sizeof(rc_hit));
+    bhits.write(hit, n * sizeof(rc_hit));
+    const std::uint32_t csh = cap_shadow, csp = cap_spawn;
+    device::Buffer& bslot_sh = scratch(kShadowSlots, n * csh * sizeof(rc_shadow));
+    device::Buffer& bslot_sp = scratch(kSpawnSlots, n * csp * sizeof(rc_ray));
+    device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
+    device::Buffer& bnshadow = scratch(kNShadow, n * 4);
+    device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
+    shade.arg(0, brays).arg(1, bhits).arg(2, un);
+    set_scene_args(shade, 3);
+    shade.arg(kSceneArgs + 3, bnshadow)
+        .arg(kSceneArgs + 4, bnspawn)
+        .arg(kSceneArgs + 5, bslot_sh)
+        .arg(kSceneArgs + 6, bslot_sp)
+        .arg(kSceneArgs + 7, bimm);
+    shade.arg(kSceneArgs + 8, 0u)
+        .arg(kSceneArgs + 9, bnshadow)
+        .arg(kSceneArgs + 10, bnshadow)
+        .arg(kSceneArgs + 11, csh)
+        .arg(kSceneArgs + 12, csp);
+    shade.arg(kSceneArgs + 13, bnshadow).arg(kSceneArgs + 14, bnspawn);
+    ctx.run(shade, n);
+    std::vector<std::uint32_t> shadow_off = bnshadow.to_vector<std::uint32_t>(n);
+    std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
+    std::vector<std::uint32_t> over;
+    for (std::size_t i = 0; i < n; ++i)
+      if (shadow_off[i] & 0x80000000u) {
+        shadow_off[i] &= 0x7FFFFFFFu;
+        over.push_back(static_cast<std::uint32_t>(i));
+      }
+    std::vector<std::uint32_t> nsh = shadow_off, nsp = spawn_off;
+    std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
+    std::vector<rc_shadow> shadows(nshadow);
+    std::vector<rc_ray> children(nspawn);
+    {
+      const auto* ssh = static_cast<const rc_shadow*>(bslot_sh.map());
+      const auto* ssp = static_cast<const rc_ray*>(bslot_sp.map());
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (k < over.size() && over[k] == i) {
+          ++k;
+          continue;
+        }
+        std::copy_n(ssh + i * csh, nsh[i], shadows.data() + shadow_off[i]);
+        std::copy_n(ssp + i * csp, nsp[i], children.data() + spawn_off[i]);
+      }
+      bslot_sh.unmap(const_cast<rc_shadow*>(ssh));
+      bslot_sp.unmap(const_cast<rc_ray*>(ssp));
+    }
+    if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
+    device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
+    device::Buffer& bshadows = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
+
     std::vector<rc_shadow> requested;
     if (settings.trace == RenderSettings::Trace::RaysAndShadows) requested = shadows;
     std::vector<std::uint8_t> blocked = trace_shadows(shadows);
@@ -482,7 +583,6 @@ struct Renderer::Impl {
         .arg(6, btotal);
     ctx.run(accumulate, n);
     std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
-    std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
     if (tree) {
       std::vector<TallyTree::TracedShadow> ts;
       for (std::size_t i = 0; i < n; ++i) {
