@@ -154,3 +154,26 @@ TEST(SlowRpictAmbient, RecoverFinishesAnInterruptedPicture) {
   for (const fs::path& f : {full, cut, done})
     fs::remove(f);
 }
+
+// Scenes with patterns (issue 6): the sky is skybright.cal through the kernels.
+TEST(SlowRpictAmbient, OfficeViewMeanLuminance) {
+  fs::path out = temp("office.hdr");
+  fs::remove(out);
+  rpict("-vf office.vf -x 64 -y 64 -ab 2 -aa 0 -ad 256 -lw 1e-4 -ps 1 -o " + out.string(),
+        "office_clear.oct");
+  double ours = mean_luminance(out.string());
+  double ref = mean_luminance(radcl::test::data("results/office_view.hdr"));
+  EXPECT_NEAR(ours, ref, 0.05 * ref) << "vs Radiance -ab 2: " << ours << " / " << ref;
+  fs::remove(out);
+}
+
+TEST(SlowRpictAmbient, MaterialsViewMeanLuminance) {
+  fs::path out = temp("materials.hdr");
+  fs::remove(out);
+  rpict("-vf materials.vf -x 96 -y 64 -ab 2 -aa 0 -ad 256 -lw 1e-4 -ps 1 -o " + out.string(),
+        "materials.oct");
+  double ours = mean_luminance(out.string());
+  double ref = mean_luminance(radcl::test::data("results/materials_view.hdr"));
+  EXPECT_NEAR(ours, ref, 0.05 * ref) << "vs Radiance -ab 2: " << ours << " / " << ref;
+  fs::remove(out);
+}
