@@ -1,5 +1,6 @@
 #include "render_settings.h"
 
+#include <cstdlib>
 #include <ctime>
 #include <unistd.h>
 
@@ -32,6 +33,9 @@ render::RenderSettings render_settings(const options::RenderOptions& r) {
   s.irradiance_i = r.irradiance;
   s.seed =
       r.uncorrelated ? static_cast<std::uint32_t>(std::time(nullptr) ^ (::getpid() << 16)) : 0u;
+  // RADCL_SEED fixes -u+'s seed, so independent renders can be repeated (tests, averaging).
+  if (const char* seed = std::getenv("RADCL_SEED"); seed && r.uncorrelated)
+    s.seed = static_cast<std::uint32_t>(std::strtoul(seed, nullptr, 10));
   return s;
 }
 
