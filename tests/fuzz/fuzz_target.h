@@ -33,18 +33,18 @@ bool register_target(const char* name, Body body);
 } // namespace radcl::fuzz
 
 #ifdef RADCL_LIBFUZZER
-#define RADCL_FUZZ_TARGET(name)                                                                \
-  static void radcl_fuzz_body(std::string_view data);                                          \
-  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {         \
-    radcl::fuzz::run_one(radcl_fuzz_body,                                                      \
-                         std::string_view(reinterpret_cast<const char*>(bytes), size));        \
-    return 0;                                                                                  \
-  }                                                                                            \
+#define RADCL_FUZZ_TARGET(name)                                                                    \
+  static void radcl_fuzz_body(std::string_view data);                                              \
+  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {             \
+    radcl::fuzz::run_one(radcl_fuzz_body,                                                          \
+                         std::string_view(reinterpret_cast<const char*>(bytes), size));            \
+    return 0;                                                                                      \
+  }                                                                                                \
   static void radcl_fuzz_body(std::string_view data)
 #else
-#define RADCL_FUZZ_TARGET(name)                                                                \
-  static void radcl_fuzz_body(std::string_view data);                                          \
-  [[maybe_unused]] static const bool radcl_fuzz_registered =                                   \
-      radcl::fuzz::register_target(#name, radcl_fuzz_body);                                    \
+#define RADCL_FUZZ_TARGET(name)                                                                    \
+  static void radcl_fuzz_body(std::string_view data);                                              \
+  [[maybe_unused]] static const bool radcl_fuzz_registered =                                       \
+      radcl::fuzz::register_target(#name, radcl_fuzz_body);                                        \
   static void radcl_fuzz_body(std::string_view data)
 #endif

@@ -20,8 +20,7 @@ struct ReadPolicy {
 // does; a name starting with '!' is run by /bin/sh and its output parsed) to `scene`.
 // Throws FatalError with Radiance's message form, e.g.
 //   (room.rad line 12): bad arguments for polygon "w1"
-void read_rad_file(SceneDescription& scene, const std::string& path,
-                   const ReadPolicy& policy = {});
+void read_rad_file(SceneDescription& scene, const std::string& path, const ReadPolicy& policy = {});
 
 // Same for an already opened stream; `name` is used in messages.
 void read_rad_stream(SceneDescription& scene, std::istream& in, const std::string& name,
