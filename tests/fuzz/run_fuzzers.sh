@@ -122,7 +122,9 @@ for t in "${TARGETS[@]}"; do
   exe=$BIN/fuzz_$t
   seeds=$WORK/seeds/$t corpus=$WORK/corpus/$t logs=$WORK/logs/$t findings=$WORK/findings/$t
   rm -rf "$seeds" "$logs"
-  mkdir -p "$seeds" "$corpus" "$logs" "$findings"
+  mkdir -p "$seeds" "$corpus" "$logs" "$findings/previous"
+  # Findings of earlier runs are kept aside, so that the counts below are this run's.
+  find "$findings" -maxdepth 1 -type f -exec mv -f {} "$findings/previous/" \;
   while IFS= read -r f; do
     [[ -f $f && ${f##*/} != README.md ]] && cp "$f" "$seeds/$(basename "$(dirname "$f")")-${f##*/}"
   done < <(seed_files "$t")
