@@ -1,5 +1,6 @@
 #include "radcl/ambient/dircode.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace radcl::ambient {
@@ -16,12 +17,12 @@ std::int32_t encode_dir(const Dir& d) {
   std::uint32_t code = 0;
   int c[3];
   for (int i = 0; i < 3; ++i) {
-    if (d[i] < 0.0) {
-      c[i] = static_cast<int>(d[i] * -kScale + 0.5);
-      code |= kNegX << i;
-    } else {
-      c[i] = static_cast<int>(d[i] * kScale + 0.5);
-    }
+    // A unit vector's components lie in [-1, 1]. Others (lookamb -r text, a damaged record)
+    // are clamped there, and NaN taken as 0, so that the conversion to int stays defined;
+    // Radiance's cast overflows for them. In-range values encode exactly as Radiance's do.
+    const double m = std::isnan(d[i]) ? 0.0 : std::min(std::fabs(d[i]), 1.0);
+    c[i] = static_cast<int>(m * kScale + 0.5);
+    if (d[i] < 0.0) code |= kNegX << i;
   }
   if (!(c[0] | c[1] | c[2])) return 0;
   int larger_xy;

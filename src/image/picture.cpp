@@ -101,20 +101,25 @@ Picture read_picture(std::istream& in, const std::string& name) {
   const Resolution& r = pic.resolution;
   pic.width = r.xres;
   pic.height = r.yres;
-  pic.pixels.resize(static_cast<std::size_t>(r.xres) * r.yres);
-  std::vector<Rgbe> line(r.scanline_length());
+  // Storage grows with the scanlines actually decoded, so a damaged or truncated file that
+  // claims a huge resolution fails without first allocating for all of it.
+  const std::size_t len = static_cast<std::size_t>(r.scanline_length());
+  std::vector<Rgbe> file_order; // scanlines as the file has them
   for (int s = 0; s < r.num_scanlines(); ++s) {
-    if (r.is_standard()) { // the common case decodes in place
-      reader.read_scanline(std::span<Rgbe>(pic.pixels).subspan(std::size_t(s) * r.xres, r.xres));
-      continue;
-    }
-    reader.read_scanline(line);
+    file_order.resize(file_order.size() + len);
+    reader.read_scanline(std::span<Rgbe>(file_order).subspan(file_order.size() - len, len));
+  }
+  if (r.is_standard()) { // already top-down, left to right
+    pic.pixels = std::move(file_order);
+    return pic;
+  }
+  pic.pixels.resize(file_order.size());
+  for (int s = 0; s < r.num_scanlines(); ++s)
     for (int p = 0; p < r.scanline_length(); ++p) {
       int col, row;
       r.to_top_down(s, p, col, row);
-      pic.at(col, row) = line[p];
+      pic.at(col, row) = file_order[std::size_t(s) * len + p];
     }
-  }
   return pic;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 #include "radcl/util/error.h"
 
@@ -26,8 +27,13 @@ std::optional<Resolution> Resolution::parse(const std::string& line) {
   r.y_major = xi > yi;
   r.x_decreasing = xi > 0 && line[xi - 1] == '-';
   r.y_decreasing = yi > 0 && line[yi - 1] == '-';
-  r.xres = std::atoi(line.c_str() + xi + 1);
-  r.yres = std::atoi(line.c_str() + yi + 1);
+  // atoi() as Radiance, except that a count beyond int is refused instead of wrapping.
+  auto count = [&line](std::size_t at) {
+    const long v = std::strtol(line.c_str() + at + 1, nullptr, 10);
+    return v > 0 && v <= std::numeric_limits<int>::max() ? static_cast<int>(v) : 0;
+  };
+  r.xres = count(xi);
+  r.yres = count(yi);
   if (r.xres <= 0 || r.yres <= 0) return std::nullopt;
   return r;
 }

@@ -7,7 +7,13 @@ namespace radcl::image {
 Rgbe to_rgbe(double r, double g, double b) {
   double m = r > g ? r : g;
   if (b > m) m = b;
-  if (m <= 1e-32) return {0, 0, 0, 0};
+  if (m <= 1e-32 || std::isnan(m)) return {0, 0, 0, 0};
+  if (std::isinf(m)) { // Radiance's conversion is undefined here: saturate infinite channels
+    auto sat = [](double v) {
+      return static_cast<std::uint8_t>(v > 0.0 && std::isinf(v) ? 255 : 0);
+    };
+    return {sat(r), sat(g), sat(b), 255};
+  }
   int e = 0;
   // frexp puts m in [0.5, 1) * 2^e, so scaling by frac*256/m maps the largest channel to
   // [128, 256). Truncation goes through int, as the C conversion in Radiance does on the

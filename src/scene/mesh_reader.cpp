@@ -159,7 +159,11 @@ std::array<float, 3> decode_direction(std::int32_t dc) {
 } // namespace
 
 TriangleMesh read_mesh(const std::string& path) {
-  ByteReader in(read_input_bytes(path, "mesh file"), path, "truncated mesh file");
+  return read_mesh_data(read_input_bytes(path, "mesh file"), path);
+}
+
+TriangleMesh read_mesh_data(std::string bytes, const std::string& path) {
+  ByteReader in(std::move(bytes), path, "truncated mesh file");
   TriangleMesh mesh;
 
   auto header = read_info_header(in);

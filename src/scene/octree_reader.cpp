@@ -119,7 +119,8 @@ SceneDescription read_octree(const std::string& path) {
   return read_octree_data(read_input_bytes(path, "octree file"), path);
 }
 
-SceneDescription read_octree_data(std::string bytes, const std::string& path) {
+SceneDescription read_octree_data(std::string bytes, const std::string& path,
+                                  const ReadPolicy& policy) {
   ByteReader in(std::move(bytes), path, "truncated octree");
   SceneDescription scene;
 
@@ -143,7 +144,7 @@ SceneDescription read_octree_data(std::string bytes, const std::string& path) {
   for (;;) {
     const std::string name = in.getstr();
     if (name.empty()) break;
-    read_rad_file(scene, name);
+    read_rad_file(scene, name, policy);
     ++nfiles;
   }
   scene.frozen = nfiles == 0;

@@ -24,7 +24,7 @@ constexpr int kMaxCommandDepth = 64; // a command whose output runs itself again
 
 class Reader {
 public:
-  explicit Reader(SceneDescription& scene) : scene_(scene) {}
+  Reader(SceneDescription& scene, const ReadPolicy& policy) : scene_(scene), policy_(policy) {}
 
   void read_path(const std::string& path);
   // Parses one input; returns whether it (with its commands) added any object.
@@ -48,17 +48,22 @@ private:
   bool same_objects(std::int32_t a, std::int32_t b) const;
 
   SceneDescription& scene_;
+  const ReadPolicy& policy_;
   int depth_ = 0;
 };
 
 void Reader::read_path(const std::string& path) {
   if (path.empty() || path[0] != '!') {
+    if (!policy_.open_files)
+      throw FatalError("cannot open scene file \"" + path + "\": reading files is disabled");
     std::filebuf fb;
     if (!fb.open(path, std::ios::in | std::ios::binary))
       throw FatalError("cannot open scene file \"" + path + "\": " + std::strerror(errno));
     if (!parse(&fb, path)) warning("(" + path + "): empty file");
     return;
   }
+  if (!policy_.run_commands)
+    throw FatalError("cannot execute \"" + path + "\": commands are disabled");
   if (depth_ >= kMaxCommandDepth) throw FatalError("(" + path + "): commands nested too deeply");
   std::fflush(nullptr); // nothing of ours may reach the command's output twice
   std::FILE* pipe = open_command(path.substr(1));
@@ -239,12 +244,13 @@ bool Reader::same_objects(std::int32_t a, std::int32_t b) const {
 
 } // namespace
 
-void read_rad_file(SceneDescription& scene, const std::string& path) {
-  Reader(scene).read_path(path);
+void read_rad_file(SceneDescription& scene, const std::string& path, const ReadPolicy& policy) {
+  Reader(scene, policy).read_path(path);
 }
 
-void read_rad_stream(SceneDescription& scene, std::istream& in, const std::string& name) {
-  if (!Reader(scene).parse(in.rdbuf(), name)) warning("(" + name + "): empty file");
+void read_rad_stream(SceneDescription& scene, std::istream& in, const std::string& name,
+                     const ReadPolicy& policy) {
+  if (!Reader(scene, policy).parse(in.rdbuf(), name)) warning("(" + name + "): empty file");
 }
 
 } // namespace radcl::scene

@@ -57,6 +57,16 @@ TEST(DirCode, KnownCodes) {
   EXPECT_FALSE(std::signbit(n[0]));
 }
 
+// Found by fuzz_amb_reader (lookamb -r text): components outside [-1, 1] overflowed the
+// conversion to int. They are clamped: the result is the code of the clamped vector.
+TEST(DirCode, OutOfRangeComponentsAreClamped) {
+  EXPECT_EQ(encode_dir({0.0, 0.0, 4.9e13}), encode_dir({0.0, 0.0, 1.0}));
+  EXPECT_EQ(encode_dir({-1e300, 0.0, 0.0}), encode_dir({-1.0, 0.0, 0.0}));
+  EXPECT_EQ(encode_dir({std::nan(""), 0.0, 1.0}), encode_dir({0.0, 0.0, 1.0}));
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(encode_dir({0.5, -inf, 0.5}), encode_dir({0.5, -1.0, 0.5}));
+}
+
 TEST(DirCode, AccuracyOverTheSphere) {
   std::mt19937 rng(7);
   std::normal_distribution<double> g;

@@ -277,6 +277,15 @@ TEST(Picture, TruncatedOrCorruptFilesAreFatal) {
   EXPECT_GT(errors, 50);
 }
 
+// Found by fuzz_picture_reader: a few bytes claiming 2^30 pixels made the reader allocate
+// (and clear) 4 GiB before finding the data truncated. Storage now follows the data.
+TEST(Picture, HugeClaimWithLittleDataFailsAtOnce) {
+  const std::string head = minimal_header() + "-Y 32768 +X 32768\n";
+  expect_fatal([&] { read_string(head + std::string(4 * 100, '\x40')); }, "truncated");
+  expect_fatal([&] { read_string(minimal_header() + "-Y 38888888888888888888 +X 2\n"); },
+               "resolution");
+}
+
 TEST(Picture, RecoverCountsCompleteScanlines) {
   const std::string ref = radcl::test::data("results/cornell_view.hdr");
   const std::string good = slurp(ref);

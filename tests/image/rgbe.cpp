@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "radcl/image/rgbe.h"
@@ -72,4 +73,14 @@ TEST(Rgbe, ValuesRoundTripWithinOneCode) {
     for (int k = 0; k < 3; ++k)
       ASSERT_NEAR(c[k], v[k], top / 128 + 1e-30);
   }
+}
+
+// Found by fuzz_amb_reader (an infinite value in lookamb -r text): frexp(inf) made the scale
+// NaN and its conversion to int undefined. Non-finite maxima now have fixed codes.
+TEST(Rgbe, NonFiniteValuesHaveFixedCodes) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(to_rgbe(inf, 1.0, -inf), (Rgbe{255, 0, 0, 255}));
+  EXPECT_EQ(to_rgbe(nan, nan, nan), (Rgbe{0, 0, 0, 0}));
+  EXPECT_EQ(to_rgbe(nan, 1.0, 0.5), to_rgbe(0.0, 1.0, 0.5)); // NaN channel next to finite ones
 }

@@ -374,5 +374,22 @@ TEST(OctreeReader, FrozenEqualsUnfrozen) {
   EXPECT_EQ(a.cube_size, b.cube_size);
 }
 
+// With ReadPolicy::open_files off (the fuzz target), an unfrozen octree's first scene file is
+// refused as bad input; a frozen octree needs no file and reads as usual.
+TEST(OctreeReader, PolicyRefusesTheScenesOfUnfrozenOctrees) {
+  ReadPolicy no_files;
+  no_files.open_files = false;
+  no_files.run_commands = false;
+  const std::string unfrozen = read_input_bytes(data("scenes/cornell.oct"), "");
+  try {
+    read_octree_data(unfrozen, "cornell.oct", no_files);
+    ADD_FAILURE() << "no error";
+  } catch (const FatalError& e) {
+    EXPECT_STREQ(e.what(), "cannot open scene file \"cornell.rad\": reading files is disabled");
+  }
+  const std::string frozen = read_input_bytes(data("scenes/office_clear_frozen.oct"), "");
+  EXPECT_GT(read_octree_data(frozen, "f.oct", no_files).objects.size(), 0u);
+}
+
 } // namespace
 } // namespace radcl::scene

@@ -377,6 +377,38 @@ TEST_F(RadReader, Commands) {
   }
 }
 
+// ReadPolicy (what the fuzz targets use): a refused command or file is a FatalError, and the
+// command is never run.
+TEST_F(RadReader, PolicyRefusesCommandsAndFiles) {
+  ScratchDir dir;
+  dir.write("sub.rad", "void plastic p 0 0 5 1 1 1 0 0\n");
+  ReadPolicy no_commands;
+  no_commands.run_commands = false;
+  SceneDescription s;
+  std::istringstream in("void light l 0 0 3 1 1 1\n!touch ran\n");
+  try {
+    read_rad_stream(s, in, "t.rad", no_commands);
+    ADD_FAILURE() << "no error";
+  } catch (const FatalError& e) {
+    EXPECT_STREQ(e.what(), "cannot execute \"!touch ran\": commands are disabled");
+  }
+  EXPECT_FALSE(fs::exists("ran"));
+  EXPECT_THROW(read_rad_file(s, "!touch ran", no_commands), FatalError);
+  EXPECT_FALSE(fs::exists("ran"));
+  SceneDescription t;
+  read_rad_file(t, "sub.rad", no_commands); // files are still allowed
+  EXPECT_EQ(t.objects.size(), 1u);
+
+  ReadPolicy no_files;
+  no_files.open_files = false;
+  try {
+    read_rad_file(t, "sub.rad", no_files);
+    ADD_FAILURE() << "no error";
+  } catch (const FatalError& e) {
+    EXPECT_STREQ(e.what(), "cannot open scene file \"sub.rad\": reading files is disabled");
+  }
+}
+
 TEST_F(RadReader, FailingCommandsAreFatal) {
   ScratchDir dir;
   SceneDescription s;

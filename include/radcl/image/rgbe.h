@@ -13,6 +13,8 @@ using Rgbe = std::array<std::uint8_t, 4>;
 using Color = std::array<float, 3>;
 
 // setcolr(): truncating conversion; negatives clamp to 0, maxima <= 1e-32 give (0,0,0,0).
+// Where setcolr() is undefined: a NaN maximum gives (0,0,0,0), an infinite one 255 for each
+// +inf channel, 0 for the others, exponent 255.
 Rgbe to_rgbe(double r, double g, double b);
 inline Rgbe to_rgbe(const Color& c) {
   return to_rgbe(c[0], c[1], c[2]);

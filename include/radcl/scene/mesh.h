@@ -31,4 +31,7 @@ struct TriangleMesh {
 // "cannot open mesh file \"<path>\"" when it cannot be read.
 TriangleMesh read_mesh(const std::string& path);
 
+// The same for a mesh file already in memory; `name` labels error messages.
+TriangleMesh read_mesh_data(std::string bytes, const std::string& name);
+
 } // namespace radcl::scene

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "radcl/scene/rad_reader.h"
 #include "radcl/scene/scene.h"
 
 namespace radcl::scene {
@@ -15,8 +16,9 @@ namespace radcl::scene {
 SceneDescription read_octree(const std::string& path);
 
 // The same for an octree already in memory (rpict reading it from standard input); `name`
-// labels error messages.
-SceneDescription read_octree_data(std::string bytes, const std::string& name);
+// labels error messages, `policy` governs reading the scene files an unfrozen octree names.
+SceneDescription read_octree_data(std::string bytes, const std::string& name,
+                                  const ReadPolicy& policy = {});
 
 class ByteReader;
 
