@@ -152,6 +152,16 @@ private:
     return scene::kVoid;
   }
 
+  // The name reported as a surface's material (Radiance's findmaterial): its first material, a
+  // mixture before it (the de facto material), or void.
+  static std::string material_name(const scene::SceneDescription& sd, std::int32_t mod,
+                                   std::int32_t m) {
+    std::int32_t mix = chain_mixture(sd, mod);
+    if (mix != scene::kVoid && sd.objects[mix].modifier == scene::kVoid)
+      return sd.objects[mix].name;
+    return m == scene::kVoid ? "void" : sd.objects[m].name;
+  }
+
   // Whether the pattern records of `sd` are placed by `pl` (inside its instance or mesh).
   static bool placed_by(const scene::SceneDescription& sd, const geometry::Placement& pl) {
     return &sd == pl.scene || (pl.mesh && &sd == &pl.mesh->objects);
@@ -402,7 +412,7 @@ private:
     out_.features.add(o.type);
     std::int32_t mod = msd->objects[surf].modifier;
     push_surface(s, msd->objects[surf].name, mod == scene::kVoid ? "void" : msd->objects[mod].name,
-                 m == scene::kVoid ? "void" : msd->objects[m].name, {msd, mod});
+                 material_name(*msd, mod, m), {msd, mod});
   }
 
   // One slot per modifier a mesh's faces may name (slot 0: faces without one).
@@ -421,13 +431,13 @@ private:
         std::int32_t mo = pl.shade_scene->objects[pl.shade_object].modifier;
         direct = {pl.shade_scene, mo};
         if (mo != scene::kVoid) mod = pl.shade_scene->objects[mo].name;
-        if (m != scene::kVoid) mat = pl.shade_scene->objects[m].name;
+        mat = material_name(*pl.shade_scene, mo, m);
       } else if (i >= 0) {
         std::int32_t m = scene::first_material_from(mesh.objects, i);
         s.material = shading_material(mesh.objects, i, m, pl);
         mod = mesh.materials[i];
         direct = {&mesh.objects, i};
-        if (m != scene::kVoid) mat = mesh.objects.objects[m].name;
+        mat = material_name(mesh.objects, i, m);
       }
       push_surface(s, prim.name, mod, mat, direct);
     }

@@ -125,6 +125,25 @@ TEST_F(Mixfunc, SpatialCoefficientSplitsTheFloor) {
   expect_rgb(v[3], blue, 1e-6);
 }
 
+// The material reported for a surface (rtrace -om) is the void mixture, as findmaterial().
+TEST_F(Mixfunc, ReportsTheMixtureAsMaterial) {
+  std::ofstream(dir / "scene.rad") << kMaterials << "void mixfunc m 4 red blue 0.5 . 0 0\n"
+                                   << floor("m");
+  scene::LoadedScene ls = scene::load_scene({"scene.rad"});
+  render::RenderSettings st;
+  render::Renderer r(ls, st, device::default_context());
+  const render::CompiledScene& cs = r.compiled();
+  ASSERT_EQ(cs.material_names.size(), cs.surfaces.size());
+  bool found = false;
+  for (std::size_t i = 0; i < cs.surfaces.size(); ++i)
+    if (cs.surface_names[i] == "floor") {
+      EXPECT_EQ(cs.material_names[i], "m");
+      EXPECT_EQ(cs.materials[cs.surfaces[i].material].type, RC_OBJ_MIXFUNC);
+      found = true;
+    }
+  EXPECT_TRUE(found);
+}
+
 // A pattern before the mixture applies to both sides; a side's material keeps its own.
 TEST_F(Mixfunc, PatternsReachEachSide) {
   Rgb red = render(floor("red"), {{3, 2}})[0], blue = render(floor("blue"), {{3, 2}})[0];
