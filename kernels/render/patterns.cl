@@ -46,6 +46,29 @@ static void rc_pattern_ray(global const float* x, float3 d, const rc_hit* h, rc_
   e->ray.v[RC_CALC_KZ] = kv.z;
 }
 
+/* The calc environment of pattern `pt` for a ray of direction d meeting h. */
+static void rc_pattern_env(const rc_scene_args* S, const rc_pattern* pt, float3 d, const rc_hit* h,
+                           rc_calc_env* e) {
+  rc_pattern_ray(S->args + pt->xform, d, h, e);
+  e->args = S->args;
+  e->ray.nargs = (int)pt->nargs;
+  e->ray.arg_base = (int)pt->args;
+  e->error = 0;
+}
+
+/* A mixfunc's coefficient at the hit, clamped to [0, 1] (Radiance's raymixture); returns 0 on
+ * a compute error, after which Radiance treats the mixture as no material. */
+static int rc_mix_coef(const rc_scene_args* S, const rc_material* m, float3 d, const rc_hit* h,
+                       float* c) {
+  rc_pattern pt = S->patterns[m->patterns];
+  rc_calc_env e;
+  rc_pattern_env(S, &pt, d, h, &e);
+  float v = (float)rc_pattern_call(pt.func[0], &e);
+  if (e.error) return 0;
+  *c = clamp(v, 0.0f, 1.0f);
+  return 1;
+}
+
 /* Applies the material's patterns and textures for a ray of direction d meeting h: multiplies
  * *pcol by their colours and adds their normal perturbations (world space) to *pert. */
 static void rc_apply_patterns(const rc_scene_args* S, const rc_material* m, float3 d,
@@ -54,11 +77,7 @@ static void rc_apply_patterns(const rc_scene_args* S, const rc_material* m, floa
     rc_pattern pt = S->patterns[m->patterns + k];
     global const float* x = S->args + pt.xform;
     rc_calc_env e;
-    rc_pattern_ray(x, d, h, &e);
-    e.args = S->args;
-    e.ray.nargs = (int)pt.nargs;
-    e.ray.arg_base = (int)pt.args;
-    e.error = 0;
+    rc_pattern_env(S, &pt, d, h, &e);
     if (pt.type == RC_OBJ_BRIGHTFUNC) {
       float v = (float)rc_pattern_call(pt.func[0], &e);
       if (!e.error) *pcol *= v;

@@ -559,49 +559,12 @@ static inline int rc_transparent(uint type) {
          type == RC_OBJ_INTERFACE;
 }
 
-static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) {
+/* Shades a hit with material `mat` (after the surface's visibility and antimatter rules). */
+static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h,
+                              rc_material mat, const rc_surface* sp, rc_rng_key key) {
   const rc_params* P = &S->params;
   uint kind = r.flags & RC_RAY_KIND_MASK;
-  rc_rng_key key = rc_make_key(r.primary, r.sample, r.depth, P->seed);
-  o->cext = rc_ray_medium(&r);
-  o->newclip = r.clip;
-  if (h.surface == RC_NONE) return; /* nothing hit: black */
-
-  if (h.surface == RC_SURF_IRRADIANCE) { /* -I measurement point */
-    rc_material m = S->materials[P->irradiance_material];
-    rc_shade_normal(S, o, &m, &r, &h, h.nrm.xyz, 0, key);
-    return;
-  }
-  rc_surface surf = S->surfaces[h.surface];
-  int invisible = surf.material == RC_NONE; /* void modifier: Radiance does not see it */
-#ifdef RADCL_HAS_ANTIMATTER
-  o->slots = surf.slots;
-  o->side = h.front ? 1 : -1;
-  invisible |= (surf.clip & r.clip) != 0u; /* clipped by an antimatter the ray is inside */
-#endif
-  if (invisible) {
-    rc_apply_medium(o, &r, o->cext, h.pos.w);
-    if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
-    return;
-  }
-  rc_material mat = S->materials[surf.material];
-#ifdef RADCL_HAS_ANTIMATTER
-  if (mat.type == RC_OBJ_ANTIMATTER) {
-    global const float* a = S->args + mat.args;
-    o->newclip = rc_antimatter_clip(a, r.clip, h.front);
-    if (h.pos.w < 0.0f) return;
-    if (!rc_antimatter_shades(&mat, a, r.inside)) {
-      rc_apply_medium(o, &r, o->cext, h.pos.w);
-      rc_pass(o, &r, &h, P, key);
-      return;
-    }
-    /* Leaving the removed part of a clipped object: the boundary is mod1's, facing the ray. */
-    mat = S->materials[mat.alt];
-    h.nrm = -h.nrm;
-    h.front = !h.front;
-  }
-#endif
-
+  rc_surface surf = *sp;
   /* illum: a source for shadow rays aimed at it, otherwise its alternate material (or
    * nothing: the ray passes through). */
   if (mat.type == RC_OBJ_ILLUM && mat.alt != RC_NONE) mat = S->materials[mat.alt];
@@ -674,6 +637,94 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   default:
     break;
   }
+}
+
+
+#ifdef RADCL_HAS_MIXFUNC
+/* A mixfunc (Radiance's raymixture): each side with a non-zero share shades the hit as if alone,
+ * its coefficients and weight scaled by its share, so the returned radiance is the blend; a side
+ * without material lets its share of the ray through. The background draws its random numbers
+ * from a stream of its own. */
+static void rc_shade_mixture(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h,
+                             const rc_material* mat, const rc_surface* surf, rc_rng_key key) {
+  float c;
+  if (!rc_mix_coef(S, mat, r.dir.xyz, &h, &c)) { /* compute error: no material */
+    rc_apply_medium(o, &r, o->cext, h.pos.w);
+    if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, &S->params, key);
+    return;
+  }
+  float3 cext = o->cext;
+  for (int side = 0; side < 2; ++side) {
+    float share = side ? 1.0f - c : c;
+    if (share <= RC_FTINY) continue;
+    uint m = side ? mat->back : mat->alt;
+    rc_ray sr = r;
+    sr.coef *= share;
+    rc_rng_key k = key;
+    if (side) k.sample = rc_child_sample(key.sample ^ 0x6D1F3A27u, 0xB0u);
+    o->cext = cext;
+    o->wfac = 1.0f;
+    o->pcol = (float3)(1.0f);
+    o->pert = (float3)(0.0f);
+    if (m == RC_NONE) {
+      rc_apply_medium(o, &sr, o->cext, h.pos.w);
+      if (h.pos.w >= 0.0f) rc_pass(o, &sr, &h, &S->params, k);
+    } else {
+      rc_shade_material(S, o, sr, h, S->materials[m], surf, k);
+    }
+  }
+}
+#endif
+
+static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) {
+  const rc_params* P = &S->params;
+  rc_rng_key key = rc_make_key(r.primary, r.sample, r.depth, P->seed);
+  o->cext = rc_ray_medium(&r);
+  o->newclip = r.clip;
+  if (h.surface == RC_NONE) return; /* nothing hit: black */
+
+  if (h.surface == RC_SURF_IRRADIANCE) { /* -I measurement point */
+    rc_material m = S->materials[P->irradiance_material];
+    rc_shade_normal(S, o, &m, &r, &h, h.nrm.xyz, 0, key);
+    return;
+  }
+  rc_surface surf = S->surfaces[h.surface];
+  int invisible = surf.material == RC_NONE; /* void modifier: Radiance does not see it */
+#ifdef RADCL_HAS_ANTIMATTER
+  o->slots = surf.slots;
+  o->side = h.front ? 1 : -1;
+  invisible |= (surf.clip & r.clip) != 0u; /* clipped by an antimatter the ray is inside */
+#endif
+  if (invisible) {
+    rc_apply_medium(o, &r, o->cext, h.pos.w);
+    if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
+    return;
+  }
+  rc_material mat = S->materials[surf.material];
+#ifdef RADCL_HAS_ANTIMATTER
+  if (mat.type == RC_OBJ_ANTIMATTER) {
+    global const float* a = S->args + mat.args;
+    o->newclip = rc_antimatter_clip(a, r.clip, h.front);
+    if (h.pos.w < 0.0f) return;
+    if (!rc_antimatter_shades(&mat, a, r.inside)) {
+      rc_apply_medium(o, &r, o->cext, h.pos.w);
+      rc_pass(o, &r, &h, P, key);
+      return;
+    }
+    /* Leaving the removed part of a clipped object: the boundary is mod1's, facing the ray. */
+    mat = S->materials[mat.alt];
+    h.nrm = -h.nrm;
+    h.front = !h.front;
+  }
+#endif
+
+#ifdef RADCL_HAS_MIXFUNC
+  if (mat.type == RC_OBJ_MIXFUNC) {
+    rc_shade_mixture(S, o, r, h, &mat, &surf, key);
+    return;
+  }
+#endif
+  rc_shade_material(S, o, r, h, mat, &surf, key);
 }
 
 #define RC_SCENE_PARAMS                                                                            \
@@ -769,6 +820,50 @@ kernel void rc_accumulate(global const float4* immediate, global const uint* sha
 #define RC_SH_BENT 4u  /* direction changed by refraction: the source must be re-checked */
 #define RC_SH_LATER 8u /* not the first segment */
 
+#ifdef RADCL_HAS_MIXFUNC
+/* What one side of a mixture lets through of a shadow ray: all (void), a clear material's
+ * straight transmission, or nothing. */
+static float3 rc_shadow_side(const rc_scene_args* S, uint idx, float3 d, const rc_hit* h) {
+  if (idx == RC_NONE) return (float3)(1.0f);
+  rc_material m = S->materials[idx];
+  float3 pcol = (float3)(1.0f), pert = (float3)(0.0f);
+  if (m.npatterns) rc_apply_patterns(S, &m, d, h, &pcol, &pert);
+  int back_pass = !h->front && !(S->params.flags & RC_PF_BV);
+  float3 n = h->front ? h->nrm.xyz : -h->nrm.xyz;
+  global const float* a = S->args + m.args;
+  switch (m.type) {
+#ifdef RADCL_HAS_TRANS
+  case RC_OBJ_TRANS: {
+    if (back_pass) return (float3)(1.0f);
+    rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]) * pcol, a, -dot(d, n));
+    return rc_trans_pure(&w) ? w.tcolor * w.tspec : (float3)(0.0f);
+  }
+#endif
+#ifdef RADCL_HAS_GLASS
+  case RC_OBJ_GLASS: {
+    if (back_pass) return (float3)(1.0f);
+    rc_glass g = rc_glass_setup(a, m.nargs, -dot(d, n));
+    return g.hastrans ? g.trans * pcol : (float3)(0.0f);
+  }
+#endif
+  default:
+    return (float3)(0.0f);
+  }
+}
+
+/* A shadow ray through a mixture: the sides' transmissions blended by the coefficient (a
+ * compute error leaves no material: the ray passes). */
+static float3 rc_shadow_mix(const rc_scene_args* S, const rc_material* m, float3 d,
+                            const rc_hit* h) {
+  float c;
+  if (!rc_mix_coef(S, m, d, h, &c)) return (float3)(1.0f);
+  float3 t = (float3)(0.0f);
+  if (c > RC_FTINY) t += c * rc_shadow_side(S, m->alt, d, h);
+  if (c < 1.0f - RC_FTINY) t += (1.0f - c) * rc_shadow_side(S, m->back, d, h);
+  return t;
+}
+#endif
+
 static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, uint state) {
   const rc_params* P = &S->params;
   global const rc_source* src = S->sources + s->source;
@@ -850,6 +945,11 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
     switch (m.type) {
     case RC_OBJ_ILLUM: /* without an alternate: invisible */
       break;
+#ifdef RADCL_HAS_MIXFUNC
+    case RC_OBJ_MIXFUNC:
+      coef = rc_shadow_mix(S, &m, d, h);
+      break;
+#endif
 #ifdef RADCL_HAS_ANTIMATTER
     case RC_OBJ_ANTIMATTER: /* a boundary without mod1 here */
       break;

@@ -109,10 +109,15 @@ private:
   std::map<std::tuple<const scene::SceneDescription*, std::int32_t, std::vector<std::int32_t>>,
            std::uint32_t>
       patterned_;
+  // Mixtures: (scene, mixfunc, compiled sides, placement if it places them) -> compiled material.
+  std::map<std::tuple<const scene::SceneDescription*, std::int32_t, std::uint32_t, std::uint32_t,
+                      const geometry::Placement*>,
+           std::uint32_t>
+      mixtures_;
 
   // The patterns and textures that apply to a surface whose modifier is `mod`: those between it
   // and its material, then the material's own (Radiance's rayshade, then raytexture). Types not
-  // handled yet are fatal; a mixture among them too.
+  // handled yet are fatal, a mixture after the material too; one before it ends the list.
   std::vector<std::int32_t> chain_patterns(const scene::SceneDescription& sd, std::int32_t mod) {
     std::vector<std::int32_t> out;
     bool past_material = false;
@@ -120,6 +125,7 @@ private:
       std::int32_t t = scene::alias_target(sd, mod);
       if (t == scene::kVoid) break;
       const scene::Object& o = sd.objects[t];
+      if (o.type == RC_OBJ_MIXFUNC && !past_material) break;
       if (scene::is_material(o.type)) {
         if (past_material) break; // a second material is never reached
         past_material = true;
@@ -135,13 +141,107 @@ private:
     return out;
   }
 
+  // The mixfunc in the chain from `mod` before any material, else kVoid.
+  static std::int32_t chain_mixture(const scene::SceneDescription& sd, std::int32_t mod) {
+    for (std::size_t steps = 0; mod != scene::kVoid && steps <= sd.objects.size(); ++steps) {
+      std::int32_t t = scene::alias_target(sd, mod);
+      if (t == scene::kVoid || scene::is_material(sd.objects[t].type)) break;
+      if (sd.objects[t].type == RC_OBJ_MIXFUNC) return t;
+      mod = sd.objects[mod].modifier;
+    }
+    return scene::kVoid;
+  }
+
+  // The name reported as a surface's material (Radiance's findmaterial): its first material, a
+  // mixture before it (the de facto material), or void.
+  static std::string material_name(const scene::SceneDescription& sd, std::int32_t mod,
+                                   std::int32_t m) {
+    std::int32_t mix = chain_mixture(sd, mod);
+    if (mix != scene::kVoid && sd.objects[mix].modifier == scene::kVoid)
+      return sd.objects[mix].name;
+    return m == scene::kVoid ? "void" : sd.objects[m].name;
+  }
+
+  // Whether the pattern records of `sd` are placed by `pl` (inside its instance or mesh).
+  static bool placed_by(const scene::SceneDescription& sd, const geometry::Placement& pl) {
+    return &sd == pl.scene || (pl.mesh && &sd == &pl.mesh->objects);
+  }
+
+  // The materials a mixture can choose between so far.
+  static bool mixable(rc_object_type t) {
+    return t == RC_OBJ_PLASTIC || t == RC_OBJ_METAL || t == RC_OBJ_TRANS || t == RC_OBJ_MIRROR ||
+           t == RC_OBJ_GLASS;
+  }
+
+  // A mixfunc `mix` met after the patterns `prefix` (Radiance's raymixture): a material of type
+  // mixfunc whose sides are compiled materials (each with the prefix, its own chain's patterns
+  // and its material's), RC_NONE for a side without material (it lets the ray through), and
+  // whose coefficient is a pattern record.
+  std::uint32_t mixture(const scene::SceneDescription& sd, std::int32_t mix,
+                        const std::vector<std::int32_t>& prefix, const geometry::Placement& pl) {
+    const scene::Object& o = sd.objects[mix];
+    const std::string where = "mixfunc \"" + o.name + "\"";
+    if (o.sargs.size() < 4) throw FatalError("bad # arguments for " + where);
+    std::array<std::uint32_t, 2> side{RC_NONE, RC_NONE};
+    bool any = false;
+    for (int i = 0; i < 2; ++i) {
+      if (o.sargs[i] == "void") continue;
+      std::int32_t smod = sd.last_modifier(mix, o.sargs[i]);
+      if (smod == scene::kVoid)
+        throw FatalError(where + ": undefined modifier \"" + o.sargs[i] + "\"");
+      if (chain_mixture(sd, smod) != scene::kVoid)
+        throw FatalError(where + ": nested mixtures are not supported yet");
+      std::int32_t m = scene::first_material_from(sd, smod);
+      if (m == scene::kVoid) continue; // patterns without a material: transparent
+      const scene::Object& mo = sd.objects[m];
+      if (!mixable(static_cast<rc_object_type>(mo.type)))
+        throw FatalError("material type \"" + std::string(scene::type_name(mo.type)) + "\" of \"" +
+                         mo.name + "\" in " + where + " is not supported yet");
+      std::vector<std::int32_t> pats = prefix;
+      std::vector<std::int32_t> own = chain_patterns(sd, smod);
+      pats.insert(pats.end(), own.begin(), own.end());
+      side[i] = patterned(sd, m, pats, pl);
+      any = true;
+    }
+    if (!any) throw FatalError(where + ": mixtures of patterns or textures are not supported yet");
+    if (o.modifier != scene::kVoid) throw FatalError(where + ": inappropriate modifier");
+    bool placed = placed_by(sd, pl);
+    auto key = std::make_tuple(&sd, mix, side[0], side[1], placed ? &pl : nullptr);
+    if (auto it = mixtures_.find(key); it != mixtures_.end()) return it->second;
+    std::array<std::array<double, 4>, 4> id{
+        {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    rc_material mm{};
+    mm.type = RC_OBJ_MIXFUNC;
+    mm.args = static_cast<std::uint32_t>(out_.args.size());
+    mm.alt = side[0];
+    mm.back = side[1];
+    mm.patterns = static_cast<std::uint32_t>(out_.patterns.size());
+    out_.patterns.push_back(
+        patterns_.compile(sd, mix, placed ? pl.to_world : id, placed ? pl.scale : 1.0, out_.args));
+    out_.features.add(RC_OBJ_MIXFUNC);
+    out_.materials.push_back(mm);
+    auto idx = static_cast<std::uint32_t>(out_.materials.size() - 1);
+    mixtures_[key] = idx;
+    return idx;
+  }
+
   // The compiled material of a surface with modifier `mod`, `m` its first material: the plain
-  // material, or a copy that carries its patterns.
+  // material, a copy that carries its patterns, or a mixture.
   std::uint32_t shading_material(const scene::SceneDescription& sd, std::int32_t mod,
                                  std::int32_t m, const geometry::Placement& pl) {
+    if (shading_) {
+      std::int32_t mix = chain_mixture(sd, mod);
+      if (mix != scene::kVoid) return mixture(sd, mix, chain_patterns(sd, mod), pl);
+    }
     std::uint32_t base = material(sd, m);
     if (!shading_ || base == RC_NONE) return base;
-    std::vector<std::int32_t> pats = chain_patterns(sd, mod);
+    return patterned(sd, m, chain_patterns(sd, mod), pl);
+  }
+
+  // Material `m` of `sd` with the patterns `pats` (placed by `pl`).
+  std::uint32_t patterned(const scene::SceneDescription& sd, std::int32_t m,
+                          const std::vector<std::int32_t>& pats, const geometry::Placement& pl) {
+    std::uint32_t base = material(sd, m);
     if (pats.empty()) return base;
     auto key = std::make_tuple(&sd, m, pats);
     if (auto it = patterned_.find(key); it != patterned_.end()) return it->second;
@@ -149,7 +249,7 @@ private:
     copy.patterns = static_cast<std::uint32_t>(out_.patterns.size());
     copy.npatterns = static_cast<std::uint32_t>(pats.size());
     // A pattern inside an instance or mesh is placed with it.
-    bool placed = &sd == pl.scene || (pl.mesh && &sd == &pl.mesh->objects);
+    bool placed = placed_by(sd, pl);
     std::array<std::array<double, 4>, 4> id{
         {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
     for (std::int32_t p : pats) {
@@ -312,7 +412,7 @@ private:
     out_.features.add(o.type);
     std::int32_t mod = msd->objects[surf].modifier;
     push_surface(s, msd->objects[surf].name, mod == scene::kVoid ? "void" : msd->objects[mod].name,
-                 m == scene::kVoid ? "void" : msd->objects[m].name, {msd, mod});
+                 material_name(*msd, mod, m), {msd, mod});
   }
 
   // One slot per modifier a mesh's faces may name (slot 0: faces without one).
@@ -331,13 +431,13 @@ private:
         std::int32_t mo = pl.shade_scene->objects[pl.shade_object].modifier;
         direct = {pl.shade_scene, mo};
         if (mo != scene::kVoid) mod = pl.shade_scene->objects[mo].name;
-        if (m != scene::kVoid) mat = pl.shade_scene->objects[m].name;
+        mat = material_name(*pl.shade_scene, mo, m);
       } else if (i >= 0) {
         std::int32_t m = scene::first_material_from(mesh.objects, i);
         s.material = shading_material(mesh.objects, i, m, pl);
         mod = mesh.materials[i];
         direct = {&mesh.objects, i};
-        if (m != scene::kVoid) mat = mesh.objects.objects[m].name;
+        mat = material_name(mesh.objects, i, m);
       }
       push_surface(s, prim.name, mod, mat, direct);
     }

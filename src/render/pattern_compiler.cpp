@@ -73,12 +73,14 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
   const scene::Object& o = sd.objects[obj];
   const auto type = static_cast<rc_object_type>(o.type);
   const std::string where = std::string(scene::type_name(o.type)) + " \"" + o.name + "\"";
-  const std::size_t nexpr = type == RC_OBJ_BRIGHTFUNC ? 1 : 3;
-  if (o.sargs.size() < nexpr + 1) throw FatalError("bad # arguments for " + where);
-  std::string ctx = load(o.sargs[nexpr], where);
+  // mixfunc: foreground and background come before its coefficient.
+  const std::size_t first = type == RC_OBJ_MIXFUNC ? 2 : 0;
+  const std::size_t nexpr = type == RC_OBJ_BRIGHTFUNC || type == RC_OBJ_MIXFUNC ? 1 : 3;
+  if (o.sargs.size() < first + nexpr + 1) throw FatalError("bad # arguments for " + where);
+  std::string ctx = load(o.sargs[first + nexpr], where);
   scene::Transform xf;
   try {
-    xf = scene::parse_transform(o.sargs, nexpr + 1);
+    xf = scene::parse_transform(o.sargs, first + nexpr + 1);
   } catch (const FatalError&) {
     throw FatalError("bad transform for " + where);
   }
@@ -86,7 +88,7 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
   p.type = type;
   p.object = static_cast<std::uint32_t>(obj);
   for (std::size_t i = 0; i < 3; ++i)
-    p.func[i] = i < nexpr ? request(o.sargs[i], ctx, where) : RC_NONE;
+    p.func[i] = i < nexpr ? request(o.sargs[first + i], ctx, where) : RC_NONE;
   p.args = static_cast<std::uint32_t>(args.size());
   p.nargs = static_cast<std::uint32_t>(o.fargs.size());
   args.insert(args.end(), o.fargs.begin(), o.fargs.end());
