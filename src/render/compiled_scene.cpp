@@ -105,8 +105,10 @@ private:
   std::map<ModKey, std::uint32_t> clip_bit_; // clipped modifiers and their bit in rc_ray.clip
   std::vector<std::uint32_t> slot_mask_;     // per crossing counter: its antimatter's list
   PatternCompiler patterns_;
-  // Materials with patterns: (scene, material, the patterns' objects) -> compiled material.
-  std::map<std::tuple<const scene::SceneDescription*, std::int32_t, std::vector<std::int32_t>>,
+  // Materials with patterns: (scene, material, the patterns' objects, the placement when it
+  // places them: each instance of an octree has its own transform) -> compiled material.
+  std::map<std::tuple<const scene::SceneDescription*, std::int32_t, std::vector<std::int32_t>,
+                      const geometry::Placement*>,
            std::uint32_t>
       patterned_;
   // Mixtures: (scene, mixfunc, compiled sides, placement if it places them) -> compiled material.
@@ -243,13 +245,13 @@ private:
                           const std::vector<std::int32_t>& pats, const geometry::Placement& pl) {
     std::uint32_t base = material(sd, m);
     if (pats.empty()) return base;
-    auto key = std::make_tuple(&sd, m, pats);
+    // A pattern inside an instance or mesh is placed with it.
+    bool placed = placed_by(sd, pl);
+    auto key = std::make_tuple(&sd, m, pats, placed ? &pl : nullptr);
     if (auto it = patterned_.find(key); it != patterned_.end()) return it->second;
     rc_material copy = out_.materials[base];
     copy.patterns = static_cast<std::uint32_t>(out_.patterns.size());
     copy.npatterns = static_cast<std::uint32_t>(pats.size());
-    // A pattern inside an instance or mesh is placed with it.
-    bool placed = placed_by(sd, pl);
     std::array<std::array<double, 4>, 4> id{
         {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
     for (std::int32_t p : pats) {
