@@ -3,6 +3,10 @@
  * dispatcher rc_pattern_call(). A compute error leaves the colour (or normal) unchanged, as
  * Radiance does after its warning. */
 
+#ifdef RADCL_HAS_PATTERN_DATA
+#include "render/pattern_data.cl"
+#endif
+
 /* Point, direction and normal of a hit mapped into a pattern's function space. */
 static void rc_pattern_ray(global const float* x, float3 d, const rc_hit* h, rc_calc_env* e) {
   float3 r0 = (float3)(x[0], x[1], x[2]), r1 = (float3)(x[3], x[4], x[5]);
@@ -78,6 +82,13 @@ static void rc_apply_patterns(const rc_scene_args* S, const rc_material* m, floa
     global const float* x = S->args + pt.xform;
     rc_calc_env e;
     rc_pattern_env(S, &pt, d, h, &e);
+#ifdef RADCL_HAS_PATTERN_DATA
+    if (pt.type == RC_OBJ_BRIGHTDATA || pt.type == RC_OBJ_COLORDATA ||
+        pt.type == RC_OBJ_TEXDATA || pt.type == RC_OBJ_COLORPICT) {
+      rc_apply_data(S, &pt, x, &e, pcol, pert);
+      continue;
+    }
+#endif
     if (pt.type == RC_OBJ_BRIGHTFUNC) {
       float v = (float)rc_pattern_call(pt.func[0], &e);
       if (!e.error) *pcol *= v;

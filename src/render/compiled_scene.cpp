@@ -76,6 +76,7 @@ public:
     assign_clip_bits();
     if (!patterns_.empty()) {
       out_.features.define("RADCL_HAS_PATTERNS");
+      if (patterns_.has_data()) out_.features.define("RADCL_HAS_PATTERN_DATA");
       out_.features.add_code(patterns_.source());
     }
     // -i/-I: plastic (pi, pi, pi) without specular reflects radiance equal to irradiance.

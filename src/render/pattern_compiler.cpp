@@ -1,9 +1,12 @@
 #include "radcl/render/pattern_compiler.h"
 
+#include <bit>
 #include <cmath>
 
 #include "radcl/calc/codegen.h"
+#include "radcl/calc/library.h"
 #include "radcl/calc/program.h"
+#include "radcl/render/pattern_data.h"
 #include "radcl/scene/object_type.h"
 #include "radcl/scene/raypath.h"
 #include "radcl/scene/transform.h"
@@ -24,6 +27,15 @@ Mat4 multiply(const Mat4& a, const Mat4& b) {
   return r;
 }
 
+bool is_data(rc_object_type t) {
+  return t == RC_OBJ_BRIGHTDATA || t == RC_OBJ_COLORDATA || t == RC_OBJ_TEXDATA ||
+         t == RC_OBJ_COLORPICT;
+}
+
+float bits(std::uint32_t u) {
+  return std::bit_cast<float>(u);
+}
+
 } // namespace
 
 PatternCompiler::PatternCompiler(const std::array<double, 3>& centre)
@@ -31,7 +43,7 @@ PatternCompiler::PatternCompiler(const std::array<double, 3>& centre)
 PatternCompiler::~PatternCompiler() = default;
 
 bool PatternCompiler::supported(rc_object_type t) {
-  return t == RC_OBJ_BRIGHTFUNC || t == RC_OBJ_COLORFUNC || t == RC_OBJ_TEXFUNC;
+  return t == RC_OBJ_BRIGHTFUNC || t == RC_OBJ_COLORFUNC || t == RC_OBJ_TEXFUNC || is_data(t);
 }
 
 std::string PatternCompiler::load(const std::string& file, const std::string& where) {
@@ -68,27 +80,144 @@ std::uint32_t PatternCompiler::request(const std::string& expr, const std::strin
   return id;
 }
 
+std::uint32_t PatternCompiler::request_function(const std::string& name, int nargs,
+                                                const std::string& context,
+                                                const std::string& where) {
+  auto key = std::make_tuple(name, nargs, context);
+  if (auto it = fids_.find(key); it != fids_.end()) return it->second;
+  if (!gen_) gen_ = std::make_unique<calc::CodeGenerator>(*program_);
+  std::string fn;
+  try {
+    fn = gen_->request_function(name, nargs, context);
+  } catch (const FatalError& e) {
+    throw FatalError(where + ": " + e.what());
+  }
+  auto id = static_cast<std::uint32_t>(fnames_.size());
+  fnames_.emplace_back(fn, nargs);
+  fids_[key] = id;
+  return id;
+}
+
+std::uint32_t PatternCompiler::data_file(const std::string& file, const std::string& where,
+                                         std::vector<float>& args, std::size_t& dims) {
+  if (auto it = data_.find(file); it != data_.end()) {
+    dims = it->second.second;
+    return it->second.first;
+  }
+  std::string path = scene::find_on_raypath(file);
+  if (path.empty()) throw FatalError(where + ": cannot find data file \"" + file + "\"");
+  DataSet d = read_data_file(path, file);
+  dims = d.axes.size();
+  std::uint32_t off = pack_data(d, args);
+  data_[file] = {off, dims};
+  return off;
+}
+
+std::array<std::uint32_t, 3> PatternCompiler::picture(const std::string& file,
+                                                      const std::string& where,
+                                                      std::vector<float>& args) {
+  if (auto it = pictures_.find(file); it != pictures_.end()) return it->second;
+  std::string path = scene::find_on_raypath(file);
+  if (path.empty()) throw FatalError(where + ": cannot find picture file \"" + file + "\"");
+  std::array<DataSet, 3> d = read_picture_data(path, file);
+  std::array<std::uint32_t, 3> off{};
+  for (int c = 0; c < 3; ++c)
+    off[c] = pack_data(d[c], args);
+  pictures_[file] = off;
+  return off;
+}
+
+std::vector<std::uint32_t> PatternCompiler::compile_data(const scene::Object& o,
+                                                         const std::string& where, rc_pattern& p,
+                                                         std::vector<float>& args,
+                                                         std::size_t& transform) {
+  const auto type = static_cast<rc_object_type>(o.type);
+  // String arguments (calc-language.md §5.4): functions, data files, function file, coordinates.
+  const std::size_t nfunc = type == RC_OBJ_BRIGHTDATA ? 1 : 3;
+  const std::size_t ndata = type == RC_OBJ_COLORPICT ? 1 : nfunc;
+  const std::size_t file = nfunc + ndata;
+  if (o.sargs.size() < file + 2) throw FatalError("bad # arguments for " + where);
+  std::array<std::uint32_t, 3> data{};
+  std::size_t dims = 2;
+  if (type == RC_OBJ_COLORPICT) {
+    data = picture(o.sargs[nfunc], where, args);
+  } else {
+    for (std::size_t i = 0; i < ndata; ++i) {
+      std::size_t n = 0;
+      data[i] = data_file(o.sargs[nfunc + i], where, args, n);
+      if (i == 0)
+        dims = n;
+      else if (n != dims)
+        throw FatalError(where + ": dimension error");
+    }
+    for (std::size_t i = ndata; i < 3; ++i)
+      data[i] = data[0];
+  }
+  std::string ctx = load(o.sargs[file], where);
+  if (o.sargs.size() < file + 1 + dims)
+    throw FatalError(where + ": too few string arguments (" + std::to_string(dims) +
+                     " coordinates needed)");
+  std::vector<std::uint32_t> desc{static_cast<std::uint32_t>(dims)};
+  std::vector<std::size_t> coord(dims);
+  for (std::size_t i = 0; i < dims; ++i)
+    coord[i] = file + 1 + i;
+  if (type == RC_OBJ_COLORPICT) std::swap(coord[0], coord[1]); // v (vertical) is the first axis
+  for (std::size_t c : coord)
+    desc.push_back(request(o.sargs[c], ctx, where));
+  desc.insert(desc.end(), data.begin(), data.end());
+  // Functions of the interpolated values: 1 value (own channel) or, for texdata and functions
+  // taking 3 parameters, all three.
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (i >= nfunc) {
+      p.func[i] = RC_NONE;
+      continue;
+    }
+    int nargs = type == RC_OBJ_TEXDATA ? 3 : 1;
+    if (type == RC_OBJ_COLORDATA || type == RC_OBJ_COLORPICT) {
+      int params = 0;
+      if (const calc::Definition* d = program_->lookup(o.sargs[i], ctx); d && d->function)
+        params = static_cast<int>(d->params.size());
+      else if (const calc::LibraryFunction* lf = calc::find_library(o.sargs[i]))
+        params = lf->args;
+      nargs = params < 3 ? 1 : 3;
+    }
+    p.func[i] = request_function(o.sargs[i], nargs, ctx, where);
+  }
+  // Arguments past the coordinates up to the first starting with '-' are ignored, as Radiance does.
+  transform = file + 1 + dims;
+  while (transform < o.sargs.size() && o.sargs[transform].rfind('-', 0) != 0)
+    ++transform;
+  return desc;
+}
+
 rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int32_t obj,
                                     const Mat4& to_world, double scale, std::vector<float>& args) {
   const scene::Object& o = sd.objects[obj];
   const auto type = static_cast<rc_object_type>(o.type);
   const std::string where = std::string(scene::type_name(o.type)) + " \"" + o.name + "\"";
-  // mixfunc: foreground and background come before its coefficient.
-  const std::size_t first = type == RC_OBJ_MIXFUNC ? 2 : 0;
-  const std::size_t nexpr = type == RC_OBJ_BRIGHTFUNC || type == RC_OBJ_MIXFUNC ? 1 : 3;
-  if (o.sargs.size() < first + nexpr + 1) throw FatalError("bad # arguments for " + where);
-  std::string ctx = load(o.sargs[first + nexpr], where);
-  scene::Transform xf;
-  try {
-    xf = scene::parse_transform(o.sargs, first + nexpr + 1);
-  } catch (const FatalError&) {
-    throw FatalError("bad transform for " + where);
-  }
   rc_pattern p{};
   p.type = type;
   p.object = static_cast<std::uint32_t>(obj);
-  for (std::size_t i = 0; i < 3; ++i)
-    p.func[i] = i < nexpr ? request(o.sargs[first + i], ctx, where) : RC_NONE;
+  std::size_t first_xf = 0;
+  std::vector<std::uint32_t> desc;
+  if (is_data(type)) {
+    desc = compile_data(o, where, p, args, first_xf);
+  } else {
+    // mixfunc: foreground and background come before its coefficient.
+    const std::size_t first = type == RC_OBJ_MIXFUNC ? 2 : 0;
+    const std::size_t nexpr = type == RC_OBJ_BRIGHTFUNC || type == RC_OBJ_MIXFUNC ? 1 : 3;
+    if (o.sargs.size() < first + nexpr + 1) throw FatalError("bad # arguments for " + where);
+    std::string ctx = load(o.sargs[first + nexpr], where);
+    for (std::size_t i = 0; i < 3; ++i)
+      p.func[i] = i < nexpr ? request(o.sargs[first + i], ctx, where) : RC_NONE;
+    first_xf = first + nexpr + 1;
+  }
+  scene::Transform xf;
+  try {
+    xf = scene::parse_transform(o.sargs, first_xf);
+  } catch (const FatalError&) {
+    throw FatalError("bad transform for " + where);
+  }
   p.args = static_cast<std::uint32_t>(args.size());
   p.nargs = static_cast<std::uint32_t>(o.fargs.size());
   args.insert(args.end(), o.fargs.begin(), o.fargs.end());
@@ -116,6 +245,8 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
   std::array<double, 3> origin = inv.point({-centre_[0], -centre_[1], -centre_[2]});
   for (double v : origin)
     args.push_back(static_cast<float>(v));
+  for (std::uint32_t u : desc) // data patterns: their descriptor follows
+    args.push_back(bits(u));
   return p;
 }
 
@@ -125,6 +256,14 @@ std::string PatternCompiler::source() {
   out += "\nrc_calc_real rc_pattern_call(uint id, rc_calc_env* e) {\n  switch (id) {\n";
   for (std::size_t i = 0; i < names_.size(); ++i)
     out += "  case " + std::to_string(i) + "u:\n    return " + names_[i] + "(e);\n";
+  out += "  }\n  return (rc_calc_real)0;\n}\n";
+  if (fnames_.empty()) return out;
+  // Functions of interpolated data: own channel value v, or all three (a, b, c).
+  out += "\nrc_calc_real rc_pattern_fcall(uint id, rc_calc_env* e, rc_calc_real v, rc_calc_real "
+         "a,\n                              rc_calc_real b, rc_calc_real c) {\n  switch (id) {\n";
+  for (std::size_t i = 0; i < fnames_.size(); ++i)
+    out += "  case " + std::to_string(i) + "u:\n    return " + fnames_[i].first +
+           (fnames_[i].second == 1 ? "(e, v);\n" : "(e, a, b, c);\n");
   out += "  }\n  return (rc_calc_real)0;\n}\n";
   return out;
 }

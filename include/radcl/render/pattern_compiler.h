@@ -1,6 +1,9 @@
 // Patterns and textures for the kernels (scene-format.md §4, calc-language.md §5): each
 // brightfunc, colorfunc or texfunc becomes an rc_pattern record whose expressions are compiled
 // to OpenCL C by the calc module, reached through one generated dispatcher, rc_pattern_call().
+// brightdata, colordata, texdata and colorpict also pack their data (render/pattern_data.h)
+// into the argument buffer and call their functions of the interpolated values through a
+// second dispatcher, rc_pattern_fcall().
 #pragma once
 
 #include <array>
@@ -8,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -34,6 +38,8 @@ public:
                      std::vector<float>& args);
 
   bool empty() const { return names_.empty(); }
+  // Whether a data pattern was compiled (the kernels then need render/pattern_data.cl).
+  bool has_data() const { return !fnames_.empty(); }
   // The generated functions and their dispatcher (nothing when no pattern was compiled).
   std::string source();
 
@@ -43,7 +49,21 @@ public:
 private:
   std::uint32_t request(const std::string& expr, const std::string& context,
                         const std::string& where);
+  // Dispatcher number of function `name` called with `nargs` (1 or 3) values.
+  std::uint32_t request_function(const std::string& name, int nargs, const std::string& context,
+                                 const std::string& where);
   std::string load(const std::string& file, const std::string& where);
+  // A data pattern: loads its data sets (appended to `args` once per file), sets p.func to its
+  // functions and `transform` to the index of its first transform argument; returns the
+  // descriptor that follows its 25 transform floats: coordinate count, their dispatcher
+  // numbers, 3 data offsets.
+  std::vector<std::uint32_t> compile_data(const scene::Object& o, const std::string& where,
+                                          rc_pattern& p, std::vector<float>& args,
+                                          std::size_t& transform);
+  std::uint32_t data_file(const std::string& file, const std::string& where,
+                          std::vector<float>& args, std::size_t& dims);
+  std::array<std::uint32_t, 3> picture(const std::string& file, const std::string& where,
+                                       std::vector<float>& args);
 
   std::array<double, 3> centre_;
   std::unique_ptr<calc::Program> program_;
@@ -51,6 +71,10 @@ private:
   std::map<std::string, std::string> contexts_;                      // function file -> its context
   std::map<std::pair<std::string, std::string>, std::uint32_t> ids_; // (expr, context) -> number
   std::vector<std::string> names_; // dispatcher number -> function
+  std::map<std::tuple<std::string, int, std::string>, std::uint32_t> fids_; // (name, n, ctx)
+  std::vector<std::pair<std::string, int>> fnames_; // rc_pattern_fcall number -> (function, n)
+  std::map<std::string, std::pair<std::uint32_t, std::size_t>> data_; // file -> (offset, dims)
+  std::map<std::string, std::array<std::uint32_t, 3>> pictures_;      // file -> channel offsets
 };
 
 } // namespace radcl::render
