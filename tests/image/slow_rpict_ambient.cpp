@@ -2,7 +2,9 @@
 // pictures: mean luminance within 5%; and the picture paths end to end (other formats, -z,
 // recover). Without a cache every bounce's rays carry their real weight, so -lw 1e-3 (rpict's
 // default) would end the third bounce that Radiance's cached run keeps: these runs use
-// -lw 1e-4. The mean over the picture needs no more than 128 x 128 pixels.
+// -lw 1e-4. The mean over the picture needs no more than 128 x 128 pixels. -as 0: super-sampling
+// only moves noise around (tests/render/ambient_supersampling.cpp checks it) and would double
+// these runs.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -49,7 +51,7 @@ double mean_luminance(const std::string& path) {
 TEST(SlowRpictAmbient, CornellMeanLuminance) {
   fs::path out = temp("cornell.hdr");
   fs::remove(out);
-  rpict("-vf cornell.vf -x 128 -y 128 -ab 3 -aa 0 -ad 512 -lw 1e-4 -ps 2 -pt 0.05 -o " +
+  rpict("-as 0 -vf cornell.vf -x 128 -y 128 -ab 3 -aa 0 -ad 512 -lw 1e-4 -ps 2 -pt 0.05 -o " +
             out.string(),
         "cornell.oct");
   double ours = mean_luminance(out.string());
@@ -62,7 +64,7 @@ TEST(SlowRpictAmbient, CornellMeanLuminance) {
 TEST(SlowRpictAmbient, CornellHighMeanLuminance) {
   fs::path out = temp("cornell_high.hdr");
   fs::remove(out);
-  rpict("-vf cornell.vf -x 96 -y 96 -ab 5 -aa 0 -ad 1024 -lw 1e-4 -ps 2 -pt 0.05 -o " +
+  rpict("-as 0 -vf cornell.vf -x 96 -y 96 -ab 5 -aa 0 -ad 1024 -lw 1e-4 -ps 2 -pt 0.05 -o " +
             out.string(),
         "cornell.oct");
   double ours = mean_luminance(out.string());
@@ -74,7 +76,7 @@ TEST(SlowRpictAmbient, CornellHighMeanLuminance) {
 TEST(SlowRpictAmbient, LuminairesMeanLuminance) {
   fs::path out = temp("luminaires.hdr");
   fs::remove(out);
-  rpict("-vf luminaires.vf -x 120 -y 83 -ab 2 -aa 0 -ad 512 -lw 1e-4 -o " + out.string(),
+  rpict("-as 0 -vf luminaires.vf -x 120 -y 83 -ab 2 -aa 0 -ad 512 -lw 1e-4 -o " + out.string(),
         "luminaires.oct");
   double ours = mean_luminance(out.string());
   double ref = mean_luminance(radcl::test::data("results/luminaires_view.hdr"));
@@ -159,7 +161,7 @@ TEST(SlowRpictAmbient, RecoverFinishesAnInterruptedPicture) {
 TEST(SlowRpictAmbient, OfficeViewMeanLuminance) {
   fs::path out = temp("office.hdr");
   fs::remove(out);
-  rpict("-vf office.vf -x 64 -y 64 -ab 2 -aa 0 -ad 256 -lw 1e-4 -ps 1 -o " + out.string(),
+  rpict("-as 0 -vf office.vf -x 64 -y 64 -ab 2 -aa 0 -ad 256 -lw 1e-4 -ps 1 -o " + out.string(),
         "office_clear.oct");
   double ours = mean_luminance(out.string());
   double ref = mean_luminance(radcl::test::data("results/office_view.hdr"));
@@ -170,7 +172,7 @@ TEST(SlowRpictAmbient, OfficeViewMeanLuminance) {
 TEST(SlowRpictAmbient, MaterialsViewMeanLuminance) {
   fs::path out = temp("materials.hdr");
   fs::remove(out);
-  rpict("-vf materials.vf -x 96 -y 64 -ab 2 -aa 0 -ad 256 -lw 1e-4 -ps 1 -o " + out.string(),
+  rpict("-as 0 -vf materials.vf -x 96 -y 64 -ab 2 -aa 0 -ad 256 -lw 1e-4 -ps 1 -o " + out.string(),
         "materials.oct");
   double ours = mean_luminance(out.string());
   double ref = mean_luminance(radcl::test::data("results/materials_view.hdr"));
