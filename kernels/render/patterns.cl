@@ -83,8 +83,8 @@ static void rc_apply_patterns(const rc_scene_args* S, const rc_material* m, floa
     rc_calc_env e;
     rc_pattern_env(S, &pt, d, h, &e);
 #ifdef RADCL_HAS_PATTERN_DATA
-    if (pt.type == RC_OBJ_BRIGHTDATA || pt.type == RC_OBJ_COLORDATA ||
-        pt.type == RC_OBJ_TEXDATA || pt.type == RC_OBJ_COLORPICT) {
+    if (pt.type == RC_OBJ_BRIGHTDATA || pt.type == RC_OBJ_COLORDATA || pt.type == RC_OBJ_TEXDATA ||
+        pt.type == RC_OBJ_COLORPICT) {
       rc_apply_data(S, &pt, x, &e, pcol, pert);
       continue;
     }
@@ -93,14 +93,14 @@ static void rc_apply_patterns(const rc_scene_args* S, const rc_material* m, floa
       float v = (float)rc_pattern_call(pt.func[0], &e);
       if (!e.error) *pcol *= v;
     } else if (pt.type == RC_OBJ_COLORFUNC) {
-      float3 c = (float3)((float)rc_pattern_call(pt.func[0], &e),
-                          (float)rc_pattern_call(pt.func[1], &e),
-                          (float)rc_pattern_call(pt.func[2], &e));
+      float3 c =
+          (float3)((float)rc_pattern_call(pt.func[0], &e), (float)rc_pattern_call(pt.func[1], &e),
+                   (float)rc_pattern_call(pt.func[2], &e));
       if (!e.error) *pcol *= c;
     } else if (pt.type == RC_OBJ_TEXFUNC) {
-      float3 v = (float3)((float)rc_pattern_call(pt.func[0], &e),
-                          (float)rc_pattern_call(pt.func[1], &e),
-                          (float)rc_pattern_call(pt.func[2], &e));
+      float3 v =
+          (float3)((float)rc_pattern_call(pt.func[0], &e), (float)rc_pattern_call(pt.func[1], &e),
+                   (float)rc_pattern_call(pt.func[2], &e));
       float3 f0 = (float3)(x[13], x[14], x[15]), f1 = (float3)(x[16], x[17], x[18]);
       float3 f2 = (float3)(x[19], x[20], x[21]);
       if (!e.error) *pert += v.x * f0 + v.y * f1 + v.z * f2;

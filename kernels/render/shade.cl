@@ -86,13 +86,13 @@ typedef struct rc_out {
   /* -as second pass: per-division super-sample counts of hemisphere `super_which` of this
    * ray ([0] = which, then ns * ns counts); only those samples are written. Else null. */
   global const uint* super;
-  uint nhemi; /* hemispheres sampled so far by this ray */
-  uint child; /* sample number of the next child (keys its random numbers) */
-  float3 pcol; /* patterns' colour at the hit (Radiance's r->pcol) */
-  float3 pert; /* textures' normal perturbation at the hit (r->pert), world space */
-  uint newclip;     /* antimatter: clip set of transmitted children (Radiance's newcset) */
-  uint slots;       /* antimatter: crossing counters a transmission through the hit changes */
-  int side;         /* and by how much: +1 through the front, -1 through the back */
+  uint nhemi;   /* hemispheres sampled so far by this ray */
+  uint child;   /* sample number of the next child (keys its random numbers) */
+  float3 pcol;  /* patterns' colour at the hit (Radiance's r->pcol) */
+  float3 pert;  /* textures' normal perturbation at the hit (r->pert), world space */
+  uint newclip; /* antimatter: clip set of transmitted children (Radiance's newcset) */
+  uint slots;   /* antimatter: crossing counters a transmission through the hit changes */
+  int side;     /* and by how much: +1 through the front, -1 through the back */
 } rc_out;
 
 static inline void rc_out_init(rc_out* o, int write) {
@@ -245,8 +245,8 @@ static inline float2 rc_square_to_disk(float sx, float sy) {
 }
 
 /* One stratified cosine-weighted direction in division (i, j) of an ns x ns hemisphere. */
-static inline float3 rc_hemi_dir(float3 n, float3 ux, float3 uy, uint i, uint j, uint ns,
-                                 float s0, float s1) {
+static inline float3 rc_hemi_dir(float3 n, float3 ux, float3 uy, uint i, uint j, uint ns, float s0,
+                                 float s1) {
   float2 d = rc_square_to_disk((j + s0) / ns, (i + s1) / ns);
   float z = sqrt(fmax(0.0f, 1.0f - d.x * d.x - d.y * d.y));
   return normalize(d.x * ux + d.y * uy + z * n);
@@ -287,7 +287,8 @@ static float3 rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 
       rc_rng_key k = key;
       k.sample = rc_child_sample(key.sample ^ 0x5EED5A3Bu, (which << 20) + cell);
       for (uint m = 1; m <= counts[cell]; ++m) {
-        float3 dir = rc_hemi_dir(n, ux, uy, i, j, ns, rc_random(k, 3u * m), rc_random(k, 3u * m + 1u));
+        float3 dir =
+            rc_hemi_dir(n, ux, uy, i, j, ns, rc_random(k, 3u * m), rc_random(k, 3u * m + 1u));
         uint depth;
         float3 cc = c;
         float weight = rc_child_weight(o, r, &cc, RC_RAY_AMBIENT, P, k, 3u * m + 2u, &depth);
@@ -639,7 +640,6 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
   }
 }
 
-
 #ifdef RADCL_HAS_MIXFUNC
 /* A mixfunc (Radiance's raymixture): each side with a non-zero share shades the hit as if alone,
  * its coefficients and weight scaled by its share, so the returned radiance is the blend; a side
@@ -730,7 +730,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
 #define RC_SCENE_PARAMS                                                                            \
   global const rc_surface *surfaces, global const rc_material *materials,                          \
       global const float *args, global const rc_source *sources, global const float4 *verts,       \
-      global const rc_mirror *mirrors, global const rc_params *params,                               \
+      global const rc_mirror *mirrors, global const rc_params *params,                             \
       global const rc_pattern *patterns
 
 #define RC_SCENE_INIT                                                                              \
