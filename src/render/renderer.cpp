@@ -177,6 +177,34 @@ struct Renderer::Impl {
         .arg(first + 7, patterns);
   }
 
+  // One launch of rc_shade over `n` rays: per ray, its output offsets (or, with caps, where the
+  // counts go back), the record buffers, its immediate value, the -as pass's requests (super
+  // = 0: none) and the per-ray slot capacities (~0u: exact room at the given offsets).
+  struct ShadeLaunch {
+    device::Buffer *rays, *hits, *shadow_off, *spawn_off, *shadows, *spawned, *immediate;
+    std::uint32_t super = 0;
+    device::Buffer *super_off = nullptr, *super_data = nullptr;
+    std::uint32_t cap_shadow = ~0u, cap_spawn = ~0u;
+    device::Buffer *nshadow = nullptr, *nspawn = nullptr; // counts out (default: the offsets)
+  };
+  void run_shade(const ShadeLaunch& l, std::size_t n) {
+    shade.arg(0, *l.rays).arg(1, *l.hits).arg(2, static_cast<std::uint32_t>(n));
+    set_scene_args(shade, 3);
+    shade.arg(kSceneArgs + 3, *l.shadow_off)
+        .arg(kSceneArgs + 4, *l.spawn_off)
+        .arg(kSceneArgs + 5, *l.shadows)
+        .arg(kSceneArgs + 6, *l.spawned)
+        .arg(kSceneArgs + 7, *l.immediate)
+        .arg(kSceneArgs + 8, l.super)
+        .arg(kSceneArgs + 9, l.super_off ? *l.super_off : *l.shadow_off)
+        .arg(kSceneArgs + 10, l.super_data ? *l.super_data : *l.shadow_off)
+        .arg(kSceneArgs + 11, l.cap_shadow)
+        .arg(kSceneArgs + 12, l.cap_spawn)
+        .arg(kSceneArgs + 13, l.nshadow ? *l.nshadow : *l.shadow_off)
+        .arg(kSceneArgs + 14, l.nspawn ? *l.nspawn : *l.spawn_off);
+    ctx.run(shade, n);
+  }
+
   // The device record of a geometry answer; a miss may still hit a distant source.
   rc_hit to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h) const {
     rc_hit out{};
@@ -402,20 +430,11 @@ struct Renderer::Impl {
     device::Buffer& bshadows = scratch(kShadows, sizeof(rc_shadow));
     device::Buffer& bspawned = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
     device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
-    shade.arg(0, brays).arg(1, bhits).arg(2, un);
-    set_scene_args(shade, 3);
-    shade.arg(kSceneArgs + 3, bsoff)
-        .arg(kSceneArgs + 4, bpoff)
-        .arg(kSceneArgs + 5, bshadows)
-        .arg(kSceneArgs + 6, bspawned)
-        .arg(kSceneArgs + 7, bimm);
-    shade.arg(kSceneArgs + 8, 1u)
-        .arg(kSceneArgs + 9, boff)
-        .arg(kSceneArgs + 10, bdata)
-        .arg(kSceneArgs + 11, ~0u)
-        .arg(kSceneArgs + 12, ~0u);
-    shade.arg(kSceneArgs + 13, bsoff).arg(kSceneArgs + 14, bpoff);
-    ctx.run(shade, n);
+    ShadeLaunch l{&brays, &bhits, &bsoff, &bpoff, &bshadows, &bspawned, &bimm};
+    l.super = 1;
+    l.super_off = &boff;
+    l.super_data = &bdata;
+    run_shade(l, n);
     std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
     for (std::size_t i = 0; i < n; ++i)
       tally.supersampled(req[i], children.data() + spawn_off[i], counts[i]);
@@ -473,7 +492,6 @@ struct Renderer::Impl {
       poff[k] = nsp[over[k]];
     }
     std::uint32_t tsh = prefix_sum(soff), tsp = prefix_sum(poff);
-    std::uint32_t um = static_cast<std::uint32_t>(m);
     device::Buffer& brays = scratch(kStepRays, r);
     device::Buffer& bhits = scratch(kStepHits, h);
     device::Buffer& bsoff = scratch(kSuperOff, soff);
@@ -481,20 +499,7 @@ struct Renderer::Impl {
     device::Buffer& bsh = scratch(kShadows, std::size_t{tsh} * sizeof(rc_shadow));
     device::Buffer& bsp = scratch(kSpawned, std::size_t{tsp} * sizeof(rc_ray));
     device::Buffer& bimm = scratch(kTotal, m * sizeof(rc_float4));
-    shade.arg(0, brays).arg(1, bhits).arg(2, um);
-    set_scene_args(shade, 3);
-    shade.arg(kSceneArgs + 3, bsoff)
-        .arg(kSceneArgs + 4, bpoff)
-        .arg(kSceneArgs + 5, bsh)
-        .arg(kSceneArgs + 6, bsp)
-        .arg(kSceneArgs + 7, bimm);
-    shade.arg(kSceneArgs + 8, 0u)
-        .arg(kSceneArgs + 9, bsoff)
-        .arg(kSceneArgs + 10, bsoff)
-        .arg(kSceneArgs + 11, ~0u)
-        .arg(kSceneArgs + 12, ~0u);
-    shade.arg(kSceneArgs + 13, bsoff).arg(kSceneArgs + 14, bpoff);
-    ctx.run(shade, m);
+    run_shade(ShadeLaunch{&brays, &bhits, &bsoff, &bpoff, &bsh, &bsp, &bimm}, m);
     std::vector<rc_shadow> sh = bsh.to_vector<rc_shadow>(tsh);
     std::vector<rc_ray> sp = bsp.to_vector<rc_ray>(tsp);
     for (std::size_t k = 0; k < m; ++k) {
@@ -523,20 +528,10 @@ struct Renderer::Impl {
     device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
     device::Buffer& bnshadow = scratch(kNShadow, n * 4);
     device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
-    shade.arg(0, brays).arg(1, bhits).arg(2, un);
-    set_scene_args(shade, 3);
-    shade.arg(kSceneArgs + 3, bnshadow)
-        .arg(kSceneArgs + 4, bnspawn)
-        .arg(kSceneArgs + 5, bslot_sh)
-        .arg(kSceneArgs + 6, bslot_sp)
-        .arg(kSceneArgs + 7, bimm);
-    shade.arg(kSceneArgs + 8, 0u)
-        .arg(kSceneArgs + 9, bnshadow)
-        .arg(kSceneArgs + 10, bnshadow)
-        .arg(kSceneArgs + 11, csh)
-        .arg(kSceneArgs + 12, csp);
-    shade.arg(kSceneArgs + 13, bnshadow).arg(kSceneArgs + 14, bnspawn);
-    ctx.run(shade, n);
+    ShadeLaunch l{&brays, &bhits, &bnshadow, &bnspawn, &bslot_sh, &bslot_sp, &bimm};
+    l.cap_shadow = csh;
+    l.cap_spawn = csp;
+    run_shade(l, n);
     std::vector<std::uint32_t> shadow_off = bnshadow.to_vector<std::uint32_t>(n);
     std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
     std::vector<std::uint32_t> over;
