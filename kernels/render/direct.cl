@@ -89,6 +89,42 @@ static void rc_direct_select(global rc_shadow* g, uint n, float known, const rc_
     g[k] = e;
 }
 
+#ifdef RADCL_HAS_PATTERNS
+/* The colour the patterns of a source's material give the point its shadow ray (from p along
+ * l) meets at distance dist: Radiance traces that ray and shades the source's surface, patterns
+ * included (brightdata distributions on light and illum). Virtual sources and distant ones are
+ * not modulated (docs/render.md). */
+static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* src, float3 p,
+                                float3 l, float dist) {
+  float3 pcol = (float3)(1.0f);
+  if (src->surface == RC_NONE || (src->flags & RC_SRCF_VIRTUAL) || src->kind == RC_SRC_DISTANT)
+    return pcol;
+  uint mi = S->surfaces[src->surface].material;
+  if (mi == RC_NONE) return pcol;
+  rc_material m = S->materials[mi];
+  if (!m.npatterns || m.type == RC_OBJ_MIXFUNC) return pcol;
+  rc_hit h;
+  float3 q = p + l * dist;
+  h.pos = (float4)(q, dist);
+  float3 n = src->axis.xyz;
+  if (src->kind == RC_SRC_SPHERE) {
+    n = normalize(q - src->pos.xyz);
+  } else if (src->kind == RC_SRC_CYLINDER) {
+    float3 v = q - src->pos.xyz;
+    n = normalize(v - dot(v, src->axis.xyz) * src->axis.xyz);
+  }
+  h.nrm = (float4)(n, 0.0f);
+  h.uv = (float4)(0.0f);
+  h.surface = src->surface;
+  h.prim = 0u;
+  h.source = RC_NONE;
+  h.front = dot(l, n) < 0.0f;
+  float3 pert = (float3)(0.0f);
+  rc_apply_patterns(S, &m, l, &h, &pcol, &pert);
+  return pcol;
+}
+#endif
+
 /* Direct contributions of every source sample (`known`: brightness of what the ray's own value
  * already holds, Radiance's r->rcol, for the threshold). */
 static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, const rc_ray* r,
@@ -117,6 +153,9 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
                                  &omega))
         continue;
       float3 ls = rc_source_radiance(src, l, dist);
+#ifdef RADCL_HAS_PATTERNS
+      ls *= rc_source_pattern(S, src, p, l, dist);
+#endif
       if (src->flags & RC_SRCF_VIRTUAL)
         ls *= rc_virtual_path(S->sources, S->mirrors, S->verts, src, p, l);
       if (rc_max3(ls) <= 0.0f) continue;
