@@ -233,7 +233,30 @@ typedef struct rc_params {
   rc_u32 irradiance_material; /* built-in material of -i/-I */
   rc_u32 ad;                  /* -ad ambient divisions */
   rc_u32 as;                  /* -as ambient super-samples */
+  rc_float4 amb;              /* irradiance cache: x = -aa, y = minimum radius (Radiance's
+                                 minarad), z = number of BVH nodes (0: no cache), w unused */
 } rc_params;
+
+/* An irradiance-cache record as the lookup kernel reads it (ambient-file.md §3; Radiance's
+ * AMBVAL with its directions decoded). */
+typedef struct rc_amb_record {
+  rc_float4 pos;  /* position (re-centred); w = weight */
+  rc_float4 nrm;  /* unit normal; w = rad[0] */
+  rc_float4 udir; /* unit u axis; w = rad[1] */
+  rc_float4 val;  /* ambient value (rgb); w = level */
+  rc_float4 grad; /* translational gradient (u, v), rotational gradient (u, v) */
+} rc_amb_record;
+
+/* A node of the BVH over the records' discs, depth first: an inner node's first child follows
+ * it, `skip` is the index after its subtree; a leaf lists records [first, first + count). */
+typedef struct rc_amb_node {
+  rc_float4 lo;  /* box; w unused */
+  rc_float4 hi;
+  rc_u32 skip;
+  rc_u32 first;
+  rc_u32 count; /* 0 for an inner node */
+  rc_u32 pad0;
+} rc_amb_node;
 
 /* Counter-based random-number key: (primary ray, sample, depth, seed). */
 typedef struct rc_rng_key {
@@ -248,7 +271,7 @@ typedef struct rc_rng_key {
 #define RADCL_LAYOUT_STRUCTS(S)                                                                \
   S(rc_float4) S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror)      \
   S(rc_shadow) S(rc_pattern)                                                                                 \
-  S(rc_rng_key) S(rc_params)
+  S(rc_rng_key) S(rc_params) S(rc_amb_record) S(rc_amb_node)
 #define RADCL_LAYOUT_FIELDS(F)                                                                 \
   F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
   F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside) F(rc_ray, cell)                  \
@@ -267,6 +290,9 @@ typedef struct rc_rng_key {
   F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)    \
   F(rc_params, av) F(rc_params, direct) F(rc_params, spec) F(rc_params, seed)                  \
   F(rc_params, lr) F(rc_params, flags) F(rc_params, ab) F(rc_params, nsources)                 \
-  F(rc_params, irradiance_material) F(rc_params, ad) F(rc_params, as)
+  F(rc_params, irradiance_material) F(rc_params, ad) F(rc_params, as) F(rc_params, amb)       \
+  F(rc_amb_record, pos) F(rc_amb_record, nrm) F(rc_amb_record, udir) F(rc_amb_record, val)     \
+  F(rc_amb_record, grad) F(rc_amb_node, lo) F(rc_amb_node, hi) F(rc_amb_node, skip)            \
+  F(rc_amb_node, first) F(rc_amb_node, count) F(rc_amb_node, pad0)
 
 #endif /* RADCL_DEVICE_TYPES_H */

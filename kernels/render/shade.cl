@@ -64,8 +64,14 @@ typedef struct rc_scene_args {
   global const float4* verts;
   global const rc_mirror* mirrors;
   global const rc_pattern* patterns;
+  global const rc_amb_record* amb_records;
+  global const rc_amb_node* amb_nodes;
   rc_params params; /* a private copy: read on every sample */
 } rc_scene_args;
+
+#ifdef RADCL_HAS_AMBCACHE
+#include "render/ambient_cache.cl"
+#endif
 
 #ifdef RADCL_HAS_PATTERNS
 #include "render/patterns.cl"
@@ -261,13 +267,27 @@ static inline float3 rc_hemi_dir(float3 n, float3 ux, float3 uy, uint i, uint j,
  * in a second pass over this ray (o->super).
  * Returns what it adds to the ray's own value now (the ambient value, without the ray's
  * coefficient); sampled light comes later. */
-static float3 rc_ambient(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 acoef, int dumb,
-                         const rc_params* P, rc_rng_key key, uint dim) {
+static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, float3 p, float3 n,
+                         float3 acoef, int dumb, rc_rng_key key, uint dim) {
+  const rc_params* P = &S->params;
   if (rc_bright(acoef) <= RC_FTINY) return (float3)(0.0f);
   if (r->ambient_depth >= P->ab || P->ad == 0 || dumb) {
     o->immediate += P->av.xyz * acoef * r->coef.xyz;
     return P->av.xyz * acoef;
   }
+#ifdef RADCL_HAS_AMBCACHE
+  /* Records that cover the point answer it (Radiance's multambient); a miss is sampled as
+   * with -aa 0 (no new record is made yet). */
+  if (P->amb.z > 0.0f) {
+    float3 acol;
+    float wsum = rc_amb_lookup(S, p, n, r->ambient_depth, r->coef.w, &acol);
+    if (wsum > RC_FTINY) {
+      float3 v = acol / wsum * acoef;
+      o->immediate += v * r->coef.xyz;
+      return v;
+    }
+  }
+#endif
   /* Radiance caps the weight so that samples do not all fall below -lw. */
   float wt = r->coef.w;
   float lim = 0.8f * rc_max3(acoef) * r->coef.w / ((float)P->ad * P->av.w);
@@ -464,10 +484,10 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
   /* Radiance checks the list against the object hit; an -I meter hits none. */
   int dumb = h->surface < RC_SURF_IRRADIANCE &&
              (S->surfaces[h->surface].flags & RC_SURFF_NO_AMBIENT) != 0u;
-  float3 known = rc_ambient(o, r, p, n, acoef, dumb, P, key, 4096);
+  float3 known = rc_ambient(S, o, r, p, n, acoef, dumb, key, 4096);
   if (m.tdiff > RC_FTINY) {
     int tblt = rough && m.tspec > RC_FTINY && P->spec.y >= m.tspec - RC_FTINY;
-    known += rc_ambient(o, r, p, -n, m.tcolor * (tblt ? m.trans : m.tdiff), dumb, P, key, 1u << 20);
+    known += rc_ambient(S, o, r, p, -n, m.tcolor * (tblt ? m.trans : m.tdiff), dumb, key, 1u << 20);
   }
 
   rc_direct(S, o, &m, r, p, n, d, flat, r->coef.xyz, rc_bright(known), key);
@@ -731,7 +751,8 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   global const rc_surface *surfaces, global const rc_material *materials,                          \
       global const float *args, global const rc_source *sources, global const float4 *verts,       \
       global const rc_mirror *mirrors, global const rc_params *params,                             \
-      global const rc_pattern *patterns
+      global const rc_pattern *patterns, global const rc_amb_record *amb_records,                  \
+      global const rc_amb_node *amb_nodes
 
 #define RC_SCENE_INIT                                                                              \
   rc_scene_args S;                                                                                 \
@@ -742,6 +763,8 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   S.verts = verts;                                                                                 \
   S.mirrors = mirrors;                                                                             \
   S.patterns = patterns;                                                                           \
+  S.amb_records = amb_records;                                                                     \
+  S.amb_nodes = amb_nodes;                                                                         \
   S.params = *params;
 
 kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,

@@ -1,8 +1,14 @@
 #include "render_settings.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <ctime>
 #include <unistd.h>
+
+#include "radcl/ambient/ambient_file.h"
+#include "radcl/ambient/format.h"
+#include "radcl/geometry/scene_geometry.h"
+#include "radcl/render/ambient_cache.h"
 
 namespace radcl::cli {
 
@@ -22,6 +28,7 @@ render::RenderSettings render_settings(const options::RenderOptions& r) {
   s.ab = r.ambient_bounces;
   s.ad = r.ambient_divisions;
   s.as = r.ambient_supersamples;
+  s.aa = r.ambient_accuracy;
   if (r.ambient_list.kind != options::ModifierList::Kind::None) {
     s.ambient_list = r.ambient_list.kind == options::ModifierList::Kind::Include
                          ? render::RenderSettings::AmbientList::Include
@@ -37,6 +44,36 @@ render::RenderSettings render_settings(const options::RenderOptions& r) {
   if (const char* seed = std::getenv("RADCL_SEED"); seed && r.uncorrelated)
     s.seed = static_cast<std::uint32_t>(std::strtoul(seed, nullptr, 10));
   return s;
+}
+
+void attach_ambient_file(render::RenderSettings& s, const options::RenderOptions& r,
+                         const scene::LoadedScene& ls, const std::string& progname,
+                         const std::string& octree) {
+  if (r.ambient_file.empty() || r.ambient_accuracy <= 0 || r.ambient_bounces <= 0) return;
+  ambient::AmbientSettings as;
+  as.progname = progname;
+  as.av = r.ambient_value;
+  as.aw = r.ambient_value_weight;
+  as.ab = r.ambient_bounces;
+  as.aa = r.ambient_accuracy;
+  as.ad = r.ambient_divisions;
+  as.as = r.ambient_supersamples;
+  as.ar = r.ambient_resolution;
+  if (!octree.empty()) as.octree = octree;
+  as.software = std::string("radcl ") + RADCL_VERSION;
+  as.time = std::time(nullptr);
+  ambient::AmbientFile file;
+  s.ambient_records = file.open(r.ambient_file, ambient::new_file_header(as));
+  file.close();
+  // Radiance's cube is the octree's; scenes given as files get their bounding box's
+  // largest side, as oconv starts from.
+  double cube = ls.main.cube_size;
+  if (!(cube > 0)) {
+    geometry::SceneGeometry g(ls);
+    auto b = g.bounds();
+    cube = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2]});
+  }
+  s.ambient_min_radius = render::ambient_min_radius(cube, r.ambient_resolution);
 }
 
 } // namespace radcl::cli

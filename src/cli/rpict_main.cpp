@@ -136,6 +136,8 @@ public:
 
   void prepare() {
     settings_ = settings_from(opt_.render);
+    cli::attach_ambient_file(settings_, opt_.render, ls_, args_.empty() ? "rpict" : args_[0],
+                             cmd_.operand < args_.size() ? args_[cmd_.operand] : "");
     renderer_ = std::make_unique<render::Renderer>(ls_, settings_, device::default_context());
   }
 
@@ -358,7 +360,8 @@ int rpict_main(int argc, char** argv) {
   if (opt.render.ambient_value_weight > 0 && opt.render.ambient_accuracy > 0)
     warning("-aw needs the irradiance cache's values: the ambient value is used as given");
   if (opt.render.ambient_accuracy > 0 && opt.render.ambient_bounces > 0)
-    warning("irradiance cache not available yet: ambient computed without it (as -aa 0)");
+    warning("the irradiance cache makes no records yet: ambient values that no -af record "
+            "covers are computed as with -aa 0");
   if (persist && !server && !cli::create_persist_file(opt.persist_file))
     return cli::attach_persist(opt.persist_file, args[0]); // another one was quicker
 

@@ -90,8 +90,12 @@ public:
     // Geometric output only: no shading, no device program (Radiance's "ray cast only").
     if (spec_.cast_only)
       caster_ = std::make_unique<Caster>(ls);
-    else
-      renderer_ = std::make_unique<render::Renderer>(ls, settings_from(opt_), *ctx);
+    else {
+      render::RenderSettings st = settings_from(opt_);
+      cli::attach_ambient_file(st, opt_.render, ls, cmd.args.empty() ? "rtrace" : cmd.args[0],
+                               cmd.operand < cmd.args.size() ? cmd.args[cmd.operand] : "");
+      renderer_ = std::make_unique<render::Renderer>(ls, st, *ctx);
+    }
   }
 
   // Reads, traces and writes until the input ends or the -x/-y count is reached.
@@ -344,7 +348,8 @@ int rtrace_main(int argc, char** argv) {
   if (cmd.opt.render.ambient_value_weight > 0 && cmd.opt.render.ambient_accuracy > 0)
     warning("-aw needs the irradiance cache's values: the ambient value is used as given");
   if (cmd.opt.render.ambient_accuracy > 0 && cmd.opt.render.ambient_bounces > 0)
-    warning("irradiance cache not available yet: ambient computed without it (as -aa 0)");
+    warning("the irradiance cache makes no records yet: ambient values that no -af record "
+            "covers are computed as with -aa 0");
   const bool persist = cmd.opt.persist != options::RtraceOptions::Persist::None;
   if (persist && !server && !cli::create_persist_file(cmd.opt.persist_file))
     return cli::attach_persist(cmd.opt.persist_file, args[0]); // another one was quicker

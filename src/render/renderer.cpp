@@ -9,6 +9,7 @@
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
 #include "radcl/device/program.h"
+#include "radcl/render/ambient_cache.h"
 #include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
 #include "radcl/util/error.h"
@@ -42,6 +43,17 @@ template <class T> device::Buffer upload(device::Context& ctx, const std::vector
   return v.empty() ? device::Buffer(ctx, sizeof(T)) : device::Buffer::from(ctx, v);
 }
 
+// Whether lookups in an irradiance cache run: records to look up, -aa > 0 and a bounce.
+bool uses_cache(const RenderSettings& st) {
+  return st.ab > 0 && st.aa > 0 && !st.ambient_records.empty();
+}
+
+device::ProgramSource shade_program(const CompiledScene& cs, const RenderSettings& st) {
+  device::FeatureSet f = cs.features;
+  if (uses_cache(st)) f.define("RADCL_HAS_AMBCACHE");
+  return f.program({"render/shade.cl"});
+}
+
 } // namespace
 
 struct Renderer::Impl {
@@ -53,8 +65,9 @@ struct Renderer::Impl {
   device::Program program;
   device::Kernel count, shade, accumulate, shadow_step;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
+  device::Buffer amb_records, amb_nodes;
   // Kernel arguments set_scene_args() fills; a kernel's next argument follows them.
-  static constexpr unsigned kSceneArgs = 8;
+  static constexpr unsigned kSceneArgs = 10;
   Vec3d centre;
   RenderStats stats;
   // -as: hemisphere samples tally per division until the super-samples are decided.
@@ -101,7 +114,7 @@ struct Renderer::Impl {
 
   Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
       : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
-        program(c, cs.features.program({"render/shade.cl"})), count(program.kernel("rc_count")),
+        program(c, shade_program(cs, st)), count(program.kernel("rc_count")),
         shade(program.kernel("rc_shade")), accumulate(program.kernel("rc_accumulate")),
         shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
         materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
@@ -130,6 +143,11 @@ struct Renderer::Impl {
     bool super = st.as > 0 && st.ab > 0 && st.ad > 0;
     tree = super || st.trace != RenderSettings::Trace::Off;
     p.as = super ? static_cast<std::uint32_t>(st.as) : 0u;
+    AmbientCacheBuffers cache;
+    if (uses_cache(st)) cache = build_ambient_cache(st.ambient_records, geom.centre(), st.aa);
+    p.amb = f4(st.aa, st.ambient_min_radius, static_cast<double>(cache.nodes.size()), 0);
+    amb_records = upload(c, cache.records);
+    amb_nodes = upload(c, cache.nodes);
     params.write(&p, sizeof p);
     upload_sources();
     add_virtual_sources(
@@ -174,7 +192,9 @@ struct Renderer::Impl {
         .arg(first + 4, verts)
         .arg(first + 5, mirrors)
         .arg(first + 6, params)
-        .arg(first + 7, patterns);
+        .arg(first + 7, patterns)
+        .arg(first + 8, amb_records)
+        .arg(first + 9, amb_nodes);
   }
 
   // One launch of rc_shade over `n` rays: per ray, its output offsets (or, with caps, where the

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "radcl/ambient/record.h"
 #include "radcl/geometry/scene_geometry.h"
 #include "radcl/render/compiled_scene.h"
 #include "radcl/scene/loader.h"
@@ -32,6 +33,12 @@ struct RenderSettings {
   int ab = 0;
   int ad = 1024; // -aa 0 hemisphere divisions
   int as = 128;  // -as super-samples spread over a hemisphere's high-variance divisions
+  // The irradiance cache: with -aa > 0 these records (from -af) answer the ambient lookups
+  // they cover, by Radiance's tests and weights; points no record covers are sampled as with
+  // -aa 0 (new records are not made yet).
+  double aa = 0;
+  double ambient_min_radius = 0; // Radiance's minarad: the octree cube's size / -ar
+  std::vector<ambient::AmbientRecord> ambient_records;
   // -ae/-ai/-aE/-aI: hits on surfaces whose modifier is excluded (or, with an include list, not
   // included) take -av instead of sampling.
   enum class AmbientList { None, Include, Exclude };

@@ -1,0 +1,29 @@
+// The irradiance cache's records in the form the lookup kernel reads (kernels/render/
+// ambient_cache.cl): decoded, re-centred records in BVH leaf order and the flattened BVH over
+// their regions, built with Embree's BVH builder.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "radcl/ambient/record.h"
+#include "radcl/device_types.h"
+
+namespace radcl::render {
+
+struct AmbientCacheBuffers {
+  std::vector<rc_amb_record> records; // in leaf order
+  std::vector<rc_amb_node> nodes;     // depth first; empty when there are no records
+};
+
+// `centre`: the scene's re-centring origin; `aa`: -aa (a record covers points within aa times
+// its radii). Records of zero radius (which Radiance never stores) are left out.
+AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> records,
+                                        const std::array<double, 3>& centre, double aa);
+
+// Radiance's setambres(): the smallest record radius, the octree cube's size over -ar (0 when
+// -ar is 0).
+double ambient_min_radius(double cube_size, int ar);
+
+} // namespace radcl::render

@@ -1,0 +1,177 @@
+#include "radcl/render/ambient_cache.h"
+
+#include <algorithm>
+#include <cmath>
+#include <embree3/rtcore.h>
+#include <new>
+
+#include "radcl/ambient/dircode.h"
+#include "radcl/util/error.h"
+
+namespace radcl::render {
+namespace {
+
+constexpr unsigned kMaxLeaf = 8;
+
+// Nodes live in Embree's builder memory (rtcThreadLocalAlloc): trivially destructible.
+struct Node {
+  bool leaf = false;
+};
+struct Inner : Node {
+  Node* kids[2] = {nullptr, nullptr};
+  RTCBounds box[2];
+};
+struct Leaf : Node {
+  unsigned n = 0;
+  unsigned ids[kMaxLeaf];
+};
+
+void* create_node(RTCThreadLocalAllocator alloc, unsigned, void*) {
+  return new (rtcThreadLocalAlloc(alloc, sizeof(Inner), 16)) Inner;
+}
+void set_children(void* node, void** kids, unsigned n, void*) {
+  for (unsigned i = 0; i < n && i < 2; ++i)
+    static_cast<Inner*>(node)->kids[i] = static_cast<Node*>(kids[i]);
+}
+void set_bounds(void* node, const RTCBounds** box, unsigned n, void*) {
+  for (unsigned i = 0; i < n && i < 2; ++i)
+    static_cast<Inner*>(node)->box[i] = *box[i];
+}
+void* create_leaf(RTCThreadLocalAllocator alloc, const RTCBuildPrimitive* prims, size_t n, void*) {
+  Leaf* l = new (rtcThreadLocalAlloc(alloc, sizeof(Leaf), 16)) Leaf;
+  l->leaf = true;
+  l->n = static_cast<unsigned>(std::min<size_t>(n, kMaxLeaf));
+  for (unsigned i = 0; i < l->n; ++i)
+    l->ids[i] = prims[i].primID;
+  return l;
+}
+
+rc_float4 f4(double x, double y, double z, double w) {
+  return {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z),
+          static_cast<float>(w)};
+}
+
+class Flattener {
+public:
+  Flattener(const std::vector<rc_amb_record>& in, AmbientCacheBuffers& out) : in_(in), out_(out) {}
+
+  // Appends `node` (whose box is `box`) and its subtree.
+  void add(const Node* node, const RTCBounds& box) {
+    const std::size_t at = out_.nodes.size();
+    rc_amb_node n{};
+    n.lo = f4(box.lower_x, box.lower_y, box.lower_z, 0);
+    n.hi = f4(box.upper_x, box.upper_y, box.upper_z, 0);
+    out_.nodes.push_back(n);
+    if (node->leaf) {
+      const Leaf* l = static_cast<const Leaf*>(node);
+      out_.nodes[at].first = static_cast<std::uint32_t>(out_.records.size());
+      out_.nodes[at].count = l->n;
+      for (unsigned i = 0; i < l->n; ++i)
+        out_.records.push_back(in_[l->ids[i]]);
+    } else {
+      const Inner* in = static_cast<const Inner*>(node);
+      for (int k = 0; k < 2; ++k)
+        if (in->kids[k]) add(in->kids[k], in->box[k]);
+    }
+    out_.nodes[at].skip = static_cast<std::uint32_t>(out_.nodes.size());
+  }
+
+private:
+  const std::vector<rc_amb_record>& in_;
+  AmbientCacheBuffers& out_;
+};
+
+} // namespace
+
+double ambient_min_radius(double cube_size, int ar) {
+  return ar > 0 ? cube_size / ar : 0.0;
+}
+
+AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> records,
+                                        const std::array<double, 3>& centre, double aa) {
+  AmbientCacheBuffers out;
+  std::vector<rc_amb_record> recs;
+  std::vector<RTCBuildPrimitive> prims;
+  for (const ambient::AmbientRecord& r : records) {
+    if (!(r.rad[0] > 0) || !(r.rad[1] > 0)) continue;
+    const auto n = ambient::decode_dir(r.ndir), u = ambient::decode_dir(r.udir);
+    const double p[3] = {r.pos[0] - centre[0], r.pos[1] - centre[1], r.pos[2] - centre[2]};
+    rc_amb_record a{};
+    a.pos = f4(p[0], p[1], p[2], r.weight);
+    a.nrm = f4(n[0], n[1], n[2], r.rad[0]);
+    a.udir = f4(u[0], u[1], u[2], r.rad[1]);
+    a.val = f4(r.val[0], r.val[1], r.val[2], r.lvl);
+    a.grad = f4(r.gpos[0], r.gpos[1], r.gdir[0], r.gdir[1]);
+    // The region a lookup accepts: within aa * rad[1] in the record's plane and aa * rad[0]
+    // along its normal (the behind test's slack included), boxed per axis.
+    const double rp = aa * r.rad[1], rn = aa * r.rad[0] + 0.002;
+    RTCBuildPrimitive b{};
+    float lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      const double e = rp * std::sqrt(std::max(0.0, 1.0 - n[k] * n[k])) + rn * std::fabs(n[k]);
+      lo[k] = static_cast<float>(p[k] - e) - 1e-6f * static_cast<float>(1 + std::fabs(p[k]));
+      hi[k] = static_cast<float>(p[k] + e) + 1e-6f * static_cast<float>(1 + std::fabs(p[k]));
+    }
+    b.lower_x = lo[0];
+    b.lower_y = lo[1];
+    b.lower_z = lo[2];
+    b.upper_x = hi[0];
+    b.upper_y = hi[1];
+    b.upper_z = hi[2];
+    b.geomID = 0;
+    b.primID = static_cast<unsigned>(recs.size());
+    prims.push_back(b);
+    recs.push_back(a);
+  }
+  if (recs.empty()) return out;
+
+  RTCBounds all{};
+  all.lower_x = all.lower_y = all.lower_z = INFINITY;
+  all.upper_x = all.upper_y = all.upper_z = -INFINITY;
+  for (const RTCBuildPrimitive& b : prims) {
+    all.lower_x = std::min(all.lower_x, b.lower_x);
+    all.lower_y = std::min(all.lower_y, b.lower_y);
+    all.lower_z = std::min(all.lower_z, b.lower_z);
+    all.upper_x = std::max(all.upper_x, b.upper_x);
+    all.upper_y = std::max(all.upper_y, b.upper_y);
+    all.upper_z = std::max(all.upper_z, b.upper_z);
+  }
+
+  RTCDevice dev = rtcNewDevice(nullptr);
+  if (!dev) throw FatalError("cannot create an Embree device for the ambient cache");
+  RTCBVH bvh = rtcNewBVH(dev);
+  RTCBuildArguments a = rtcDefaultBuildArguments();
+  a.byteSize = sizeof(a);
+  a.buildFlags = RTC_BUILD_FLAG_NONE;
+  a.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
+  a.maxBranchingFactor = 2;
+  a.maxDepth = 1024;
+  a.sahBlockSize = 1;
+  a.minLeafSize = 1;
+  a.maxLeafSize = kMaxLeaf;
+  a.traversalCost = 1.0f;
+  a.intersectionCost = 1.0f;
+  a.bvh = bvh;
+  a.primitives = prims.data();
+  a.primitiveCount = prims.size();
+  a.primitiveArrayCapacity = prims.size();
+  a.createNode = create_node;
+  a.setNodeChildren = set_children;
+  a.setNodeBounds = set_bounds;
+  a.createLeaf = create_leaf;
+  void* root = rtcBuildBVH(&a);
+  if (!root) {
+    rtcReleaseBVH(bvh);
+    rtcReleaseDevice(dev);
+    throw FatalError("cannot build the ambient cache's BVH");
+  }
+  out.records.reserve(recs.size());
+  Flattener(recs, out).add(static_cast<const Node*>(root), all);
+  rtcReleaseBVH(bvh);
+  rtcReleaseDevice(dev);
+  if (out.records.size() != recs.size())
+    throw FatalError("ambient cache BVH lost records"); // a leaf larger than kMaxLeaf
+  return out;
+}
+
+} // namespace radcl::render

@@ -1,0 +1,114 @@
+// The BVH over irradiance-cache records (render/ambient_cache.h): every record in exactly one
+// leaf, every record's region inside the boxes of the nodes above it, and skip links that
+// visit each subtree once; the minimum radius as Radiance's setambres().
+#include <cmath>
+#include <gtest/gtest.h>
+#include <random>
+#include <set>
+
+#include "radcl/ambient/dircode.h"
+#include "radcl/render/ambient_cache.h"
+
+using namespace radcl;
+
+namespace {
+
+std::vector<ambient::AmbientRecord> random_records(int n, unsigned seed) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<float> u(-10, 10), r(0.01f, 0.5f), s(-1, 1);
+  std::vector<ambient::AmbientRecord> out;
+  for (int i = 0; i < n; ++i) {
+    ambient::AmbientRecord a;
+    a.pos = {u(g), u(g), u(g)};
+    ambient::Dir nd{s(g), s(g), s(g)};
+    double l = std::sqrt(nd[0] * nd[0] + nd[1] * nd[1] + nd[2] * nd[2]);
+    for (auto& c : nd)
+      c /= l;
+    // A unit u axis perpendicular to the normal.
+    ambient::Dir t = std::fabs(nd[0]) < 0.6 ? ambient::Dir{1, 0, 0} : ambient::Dir{0, 1, 0};
+    ambient::Dir ud{nd[1] * t[2] - nd[2] * t[1], nd[2] * t[0] - nd[0] * t[2],
+                    nd[0] * t[1] - nd[1] * t[0]};
+    l = std::sqrt(ud[0] * ud[0] + ud[1] * ud[1] + ud[2] * ud[2]);
+    for (auto& c : ud)
+      c /= l;
+    a.ndir = ambient::encode_dir(nd);
+    a.udir = ambient::encode_dir(ud);
+    float r0 = r(g), r1 = r(g);
+    a.rad = {std::min(r0, r1), std::max(r0, r1)};
+    a.weight = 1;
+    a.val = {float(i), 0, 0}; // identifies the record after reordering
+    out.push_back(a);
+  }
+  return out;
+}
+
+} // namespace
+
+TEST(AmbientCacheBvh, EveryRecordOnceInsideItsAncestors) {
+  for (int n : {1, 2, 7, 9, 100, 5000}) {
+    auto recs = random_records(n, 17u + n);
+    const std::array<double, 3> centre{1, 2, 3};
+    const double aa = 0.2;
+    render::AmbientCacheBuffers b = render::build_ambient_cache(recs, centre, aa);
+    ASSERT_EQ(b.records.size(), recs.size());
+    std::set<int> seen;
+    for (const rc_amb_record& r : b.records)
+      seen.insert(int(r.val.x));
+    EXPECT_EQ(seen.size(), recs.size());
+    // Walk the tree: a node's subtree is [i + 1, skip); its boxes hold its records' regions.
+    std::vector<std::size_t> stack;
+    std::size_t leaves = 0;
+    for (std::size_t i = 0; i < b.nodes.size(); ++i) {
+      const rc_amb_node& nd = b.nodes[i];
+      ASSERT_GT(nd.skip, i);
+      ASSERT_LE(nd.skip, b.nodes.size());
+      while (!stack.empty() && b.nodes[stack.back()].skip <= i)
+        stack.pop_back();
+      if (nd.count) {
+        ++leaves;
+        EXPECT_EQ(nd.skip, i + 1);
+        for (std::uint32_t k = nd.first; k < nd.first + nd.count; ++k) {
+          const rc_amb_record& r = b.records[k];
+          const float p[3] = {r.pos.x, r.pos.y, r.pos.z}, n[3] = {r.nrm.x, r.nrm.y, r.nrm.z};
+          std::vector<std::size_t> up = stack;
+          up.push_back(i);
+          for (std::size_t a : up) {
+            const rc_amb_node& box = b.nodes[a];
+            const float lo[3] = {box.lo.x, box.lo.y, box.lo.z},
+                        hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+            for (int c = 0; c < 3; ++c) {
+              // The disc of radius aa * rad[1] and the slab of aa * rad[0] along the normal.
+              const float e = 0.999f * float(aa) *
+                              (r.udir.w * std::sqrt(std::max(0.0f, 1 - n[c] * n[c])) +
+                               r.nrm.w * std::fabs(n[c]));
+              EXPECT_LE(lo[c], p[c] - e);
+              EXPECT_GE(hi[c], p[c] + e);
+            }
+          }
+        }
+      }
+      stack.push_back(i);
+    }
+    EXPECT_GE(leaves, (recs.size() + 7) / 8);
+    // Positions are re-centred.
+    bool found = false;
+    for (const rc_amb_record& r : b.records)
+      if (int(r.val.x) == 0) {
+        EXPECT_NEAR(r.pos.x, recs[0].pos[0] - 1, 1e-5);
+        EXPECT_NEAR(r.pos.z, recs[0].pos[2] - 3, 1e-5);
+        found = true;
+      }
+    EXPECT_TRUE(found);
+  }
+}
+
+TEST(AmbientCacheBvh, NoRecordsNoNodes) {
+  render::AmbientCacheBuffers b = render::build_ambient_cache({}, {0, 0, 0}, 0.1);
+  EXPECT_TRUE(b.nodes.empty());
+  EXPECT_TRUE(b.records.empty());
+}
+
+TEST(AmbientCacheBvh, MinimumRadiusAsSetambres) {
+  EXPECT_DOUBLE_EQ(render::ambient_min_radius(25.6, 256), 0.1);
+  EXPECT_DOUBLE_EQ(render::ambient_min_radius(25.6, 0), 0.0);
+}
