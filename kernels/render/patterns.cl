@@ -6,6 +6,9 @@
 #ifdef RADCL_HAS_PATTERN_DATA
 #include "render/pattern_data.cl"
 #endif
+#ifdef RADCL_HAS_TEXT
+#include "render/text.cl"
+#endif
 
 /* Point, direction and normal of a hit mapped into a pattern's function space. */
 static void rc_pattern_ray(global const float* x, float3 d, const rc_hit* h, rc_calc_env* e) {
@@ -65,6 +68,12 @@ static void rc_pattern_env(const rc_scene_args* S, const rc_pattern* pt, float3 
 static int rc_mix_coef(const rc_scene_args* S, const rc_material* m, float3 d, const rc_hit* h,
                        float* c) {
   rc_pattern pt = S->patterns[m->patterns];
+#ifdef RADCL_HAS_TEXT
+  if (pt.type == RC_OBJ_MIXTEXT) { /* mixtext: foreground inside the text */
+    *c = rc_text_hit(S, S->args + pt.xform, h) ? 1.0f : 0.0f;
+    return 1;
+  }
+#endif
   rc_calc_env e;
   rc_pattern_env(S, &pt, d, h, &e);
   float v = (float)rc_pattern_call(pt.func[0], &e);
@@ -80,6 +89,12 @@ static void rc_apply_patterns(const rc_scene_args* S, const rc_material* m, floa
   for (uint k = 0; k < m->npatterns; ++k) {
     rc_pattern pt = S->patterns[m->patterns + k];
     global const float* x = S->args + pt.xform;
+#ifdef RADCL_HAS_TEXT
+    if (pt.type == RC_OBJ_BRIGHTTEXT || pt.type == RC_OBJ_COLORTEXT) {
+      rc_apply_text(S, x, h, pcol);
+      continue;
+    }
+#endif
     rc_calc_env e;
     rc_pattern_env(S, &pt, d, h, &e);
 #ifdef RADCL_HAS_PATTERN_DATA

@@ -34,6 +34,11 @@ bool supported_material(rc_object_type t) {
   }
 }
 
+// Mixtures handled by the mixfunc machinery (mixtext's coefficient is its text mask).
+bool is_mix(std::uint32_t t) {
+  return t == RC_OBJ_MIXFUNC || t == RC_OBJ_MIXTEXT;
+}
+
 // Limits of the rays' antimatter state (rc_ray.clip and rc_ray.inside).
 constexpr std::size_t kMaxClipped = 32;
 constexpr std::size_t kMaxShadingAntimatter = 4;
@@ -77,6 +82,7 @@ public:
     if (!patterns_.empty()) {
       out_.features.define("RADCL_HAS_PATTERNS");
       if (patterns_.has_data()) out_.features.define("RADCL_HAS_PATTERN_DATA");
+      if (patterns_.has_text()) out_.features.define("RADCL_HAS_TEXT");
       out_.features.add_code(patterns_.source());
     }
     // -i/-I: plastic (pi, pi, pi) without specular reflects radiance equal to irradiance.
@@ -128,7 +134,7 @@ private:
       std::int32_t t = scene::alias_target(sd, mod);
       if (t == scene::kVoid) break;
       const scene::Object& o = sd.objects[t];
-      if (o.type == RC_OBJ_MIXFUNC && !past_material) break;
+      if (is_mix(o.type) && !past_material) break;
       if (scene::is_material(o.type)) {
         if (past_material) break; // a second material is never reached
         past_material = true;
@@ -149,7 +155,7 @@ private:
     for (std::size_t steps = 0; mod != scene::kVoid && steps <= sd.objects.size(); ++steps) {
       std::int32_t t = scene::alias_target(sd, mod);
       if (t == scene::kVoid || scene::is_material(sd.objects[t].type)) break;
-      if (sd.objects[t].type == RC_OBJ_MIXFUNC) return t;
+      if (is_mix(sd.objects[t].type)) return t;
       mod = sd.objects[mod].modifier;
     }
     return scene::kVoid;
@@ -183,7 +189,7 @@ private:
   std::uint32_t mixture(const scene::SceneDescription& sd, std::int32_t mix,
                         const std::vector<std::int32_t>& prefix, const geometry::Placement& pl) {
     const scene::Object& o = sd.objects[mix];
-    const std::string where = "mixfunc \"" + o.name + "\"";
+    const std::string where = std::string(scene::type_name(o.type)) + " \"" + o.name + "\"";
     if (o.sargs.size() < 4) throw FatalError("bad # arguments for " + where);
     std::array<std::uint32_t, 2> side{RC_NONE, RC_NONE};
     bool any = false;

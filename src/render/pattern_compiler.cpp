@@ -43,7 +43,8 @@ PatternCompiler::PatternCompiler(const std::array<double, 3>& centre)
 PatternCompiler::~PatternCompiler() = default;
 
 bool PatternCompiler::supported(rc_object_type t) {
-  return t == RC_OBJ_BRIGHTFUNC || t == RC_OBJ_COLORFUNC || t == RC_OBJ_TEXFUNC || is_data(t);
+  return t == RC_OBJ_BRIGHTFUNC || t == RC_OBJ_COLORFUNC || t == RC_OBJ_TEXFUNC || is_data(t) ||
+         t == RC_OBJ_BRIGHTTEXT || t == RC_OBJ_COLORTEXT;
 }
 
 std::string PatternCompiler::load(const std::string& file, const std::string& where) {
@@ -200,7 +201,11 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
   p.object = static_cast<std::uint32_t>(obj);
   std::size_t first_xf = 0;
   std::vector<std::uint32_t> desc;
-  if (is_data(type)) {
+  std::vector<float> text; // text patterns: their descriptor; they take no transform arguments
+  if (TextPatterns::is_text(type)) {
+    text = text_.compile(o, where, args);
+    first_xf = o.sargs.size();
+  } else if (is_data(type)) {
     desc = compile_data(o, where, p, args, first_xf);
   } else {
     // mixfunc: foreground and background come before its coefficient.
@@ -247,11 +252,13 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
     args.push_back(static_cast<float>(v));
   for (std::uint32_t u : desc) // data patterns: their descriptor follows
     args.push_back(bits(u));
+  args.insert(args.end(), text.begin(), text.end());
   return p;
 }
 
 std::string PatternCompiler::source() {
-  if (names_.empty()) return "";
+  if (empty()) return "";
+  if (!gen_) gen_ = std::make_unique<calc::CodeGenerator>(*program_); // text patterns alone
   std::string out = gen_->source();
   out += "\nrc_calc_real rc_pattern_call(uint id, rc_calc_env* e) {\n  switch (id) {\n";
   for (std::size_t i = 0; i < names_.size(); ++i)

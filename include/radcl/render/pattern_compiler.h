@@ -3,7 +3,8 @@
 // to OpenCL C by the calc module, reached through one generated dispatcher, rc_pattern_call().
 // brightdata, colordata, texdata and colorpict also pack their data (render/pattern_data.h)
 // into the argument buffer and call their functions of the interpolated values through a
-// second dispatcher, rc_pattern_fcall().
+// second dispatcher, rc_pattern_fcall(). brighttext, colortext and mixtext pack their text and
+// font instead (render/text_pattern.h).
 #pragma once
 
 #include <array>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "radcl/device_types.h"
+#include "radcl/render/text_pattern.h"
 #include "radcl/scene/scene.h"
 
 namespace radcl::calc {
@@ -37,9 +39,11 @@ public:
                      const std::array<std::array<double, 4>, 4>& to_world, double scale,
                      std::vector<float>& args);
 
-  bool empty() const { return names_.empty(); }
+  bool empty() const { return names_.empty() && text_.empty(); }
   // Whether a data pattern was compiled (the kernels then need render/pattern_data.cl).
   bool has_data() const { return !fnames_.empty(); }
+  // Whether a text pattern was compiled (render/text.cl).
+  bool has_text() const { return !text_.empty(); }
   // The generated functions and their dispatcher (nothing when no pattern was compiled).
   std::string source();
 
@@ -75,6 +79,7 @@ private:
   std::vector<std::pair<std::string, int>> fnames_; // rc_pattern_fcall number -> (function, n)
   std::map<std::string, std::pair<std::uint32_t, std::size_t>> data_; // file -> (offset, dims)
   std::map<std::string, std::array<std::uint32_t, 3>> pictures_;      // file -> channel offsets
+  TextPatterns text_;
 };
 
 } // namespace radcl::render
