@@ -178,7 +178,24 @@ private:
     return Node::number(v);
   }
 
+  // Each nested parenthesis, function argument or '^' operand goes one level deeper into the
+  // recursive descent; far beyond what any function file needs, an error instead of running
+  // out of stack.
+  static constexpr int kMaxNesting = 256;
+  int nesting_ = 0;
+  struct Deeper {
+    Parser& p;
+    explicit Deeper(Parser& q) : p(q) {
+      if (++p.nesting_ > kMaxNesting) {
+        --p.nesting_;
+        p.syntax("expression nested too deeply");
+      }
+    }
+    ~Deeper() { --p.nesting_; }
+  };
+
   Node e1() {
+    Deeper guard(*this);
     Node a = e2();
     while (next() == '+' || next() == '-') {
       Op op = next() == '+' ? Op::Add : Op::Sub;
@@ -219,6 +236,7 @@ private:
     Node a = e4();
     if (next() != '^') return a;
     advance();
+    Deeper guard(*this);
     Node b = e3();
     if (a.is_num() && b.is_num()) return reduce(binary(Op::Pow, std::move(a), std::move(b)));
     if (a.is_num() && a.num == 0) return Node::number(0);
