@@ -32,6 +32,12 @@ bool is_data(rc_object_type t) {
          t == RC_OBJ_COLORPICT;
 }
 
+bool is_brdf(rc_object_type t) {
+  return t == RC_OBJ_PLASFUNC || t == RC_OBJ_METFUNC || t == RC_OBJ_TRANSFUNC ||
+         t == RC_OBJ_PLASDATA || t == RC_OBJ_METDATA || t == RC_OBJ_TRANSDATA ||
+         t == RC_OBJ_BRTDFUNC;
+}
+
 float bits(std::uint32_t u) {
   return std::bit_cast<float>(u);
 }
@@ -202,6 +208,8 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
   std::vector<std::uint32_t> desc;
   if (is_data(type)) {
     desc = compile_data(o, where, p, args, first_xf);
+  } else if (is_brdf(type)) {
+    desc = compile_brdf(o, where, args, first_xf);
   } else {
     // mixfunc: foreground and background come before its coefficient.
     const std::size_t first = type == RC_OBJ_MIXFUNC ? 2 : 0;
@@ -251,13 +259,13 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
 }
 
 std::string PatternCompiler::source() {
-  if (names_.empty()) return "";
-  std::string out = gen_->source();
+  if (!gen_) return "";
+  std::string out = gen_->source() + brdf_source();
   out += "\nrc_calc_real rc_pattern_call(uint id, rc_calc_env* e) {\n  switch (id) {\n";
   for (std::size_t i = 0; i < names_.size(); ++i)
     out += "  case " + std::to_string(i) + "u:\n    return " + names_[i] + "(e);\n";
   out += "  }\n  return (rc_calc_real)0;\n}\n";
-  if (fnames_.empty()) return out;
+  if (!has_data()) return out;
   // Functions of interpolated data: own channel value v, or all three (a, b, c).
   out += "\nrc_calc_real rc_pattern_fcall(uint id, rc_calc_env* e, rc_calc_real v, rc_calc_real "
          "a,\n                              rc_calc_real b, rc_calc_real c) {\n  switch (id) {\n";
