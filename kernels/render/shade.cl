@@ -608,7 +608,7 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
     return;
   }
 
-#ifdef RADCL_HAS_BRTDFUNC
+#ifdef RADCL_HAS_FUNC_MATERIALS
   if (mat.type == RC_OBJ_BRTDFUNC) { /* both sides are real: no back-face rule */
     rc_shade_brtdfunc(S, o, &mat, &r, &h, key);
     return;
@@ -993,7 +993,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       break;
     }
 #endif
-#ifdef RADCL_HAS_BRTDFUNC
+#ifdef RADCL_HAS_FUNC_MATERIALS
     case RC_OBJ_BRTDFUNC: /* its transmission expressions, on either side */
       if (!rc_brtdfunc_shadow(S, &m, d, h, pcol, pert, &coef)) return RC_SH_BLOCKED;
       break;
