@@ -16,6 +16,7 @@
 
 #include "radcl/device/context.h"
 #include "radcl/render/renderer.h"
+#include "radcl/scene/rad_reader.h"
 #include "radcl/util/error.h"
 #include "test_env.h"
 
@@ -311,6 +312,30 @@ TEST_F(FuncMaterials, PatternsModifyTheColour) {
   for (int i = 0; i < 3; ++i)
     want[i] = kSun * kOmega * (c[i] * 0.8 / kPi + 3 * 0.2 * c[i]);
   expect_rgb(v, want, "patterned metfunc");
+}
+
+// Inside an instance placed with -rz 90 the function's coordinates are the instance's: the sun
+// at world (0.6, 0, 0.8) is at (0, -0.6, 0.8) there, so -dy gives 0.6 (0 without the placement).
+TEST_F(FuncMaterials, InstancePlacesTheFunction) {
+  std::ofstream(dir / "inner.rad")
+      << "void plasfunc m 2 minusy f.cal 0 4 0.5 0.5 0.5 0.1\n"
+      << "m polygon floor 0 0 12 -20 -20 0 20 -20 0 20 20 0 -20 20 0\n";
+  const Vec sun = unit(0.6, 0, 0.8);
+  std::ofstream(dir / "main.rad") << "void light sunmat 0 0 3 1000 1000 1000\n"
+                                  << "sunmat source sun 0 0 4 " << sun[0] << " " << sun[1] << " "
+                                  << sun[2] << " 1\n"
+                                  << "void instance it 3 inner.oct -rz 90 0 0\n";
+  scene::LoadedScene ls;
+  scene::read_rad_file(ls.main, "main.rad");
+  auto inner = std::make_shared<scene::SceneDescription>();
+  scene::read_rad_file(*inner, "inner.rad");
+  ls.octrees[(dir / "inner.oct").string()] = inner;
+  render::Renderer r(ls, st, device::default_context());
+  std::vector<render::PrimaryRay> pr{{{0, 0, 1}, {0, 0, -1}, 0}};
+  std::vector<render::PrimaryResult> res(1);
+  r.render(pr, res);
+  double want = kSun * kOmega * 0.8 * (0.5 * 0.9 / kPi + 0.6 * 0.1);
+  expect_rgb(res[0].value, {want, want, want}, "instance");
 }
 
 TEST_F(FuncMaterials, Errors) {
