@@ -6,6 +6,7 @@
 #include "radcl/calc/codegen.h"
 #include "radcl/calc/library.h"
 #include "radcl/calc/program.h"
+#include "radcl/render/func_materials.h"
 #include "radcl/render/pattern_data.h"
 #include "radcl/scene/object_type.h"
 #include "radcl/scene/raypath.h"
@@ -30,12 +31,6 @@ Mat4 multiply(const Mat4& a, const Mat4& b) {
 bool is_data(rc_object_type t) {
   return t == RC_OBJ_BRIGHTDATA || t == RC_OBJ_COLORDATA || t == RC_OBJ_TEXDATA ||
          t == RC_OBJ_COLORPICT;
-}
-
-bool is_brdf(rc_object_type t) {
-  return t == RC_OBJ_PLASFUNC || t == RC_OBJ_METFUNC || t == RC_OBJ_TRANSFUNC ||
-         t == RC_OBJ_PLASDATA || t == RC_OBJ_METDATA || t == RC_OBJ_TRANSDATA ||
-         t == RC_OBJ_BRTDFUNC;
 }
 
 float bits(std::uint32_t u) {
@@ -208,7 +203,7 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
   std::vector<std::uint32_t> desc;
   if (is_data(type)) {
     desc = compile_data(o, where, p, args, first_xf);
-  } else if (is_brdf(type)) {
+  } else if (is_func_material(type)) {
     desc = compile_brdf(o, where, args, first_xf);
   } else {
     // mixfunc: foreground and background come before its coefficient.
