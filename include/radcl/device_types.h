@@ -138,7 +138,8 @@ typedef struct rc_material {
   rc_u32 npatterns; /* how many apply (those between the surface and it, then its own) */
   rc_u32 back;      /* mixfunc: background material (RC_NONE = void; alt is the foreground, and
                        `patterns` its coefficient's record); unused otherwise */
-  rc_u32 pad1;
+  rc_u32 func;      /* BRDF materials (plasfunc .. BRTDfunc): their function record in the
+                       pattern buffer (render/func_materials.h); unused otherwise */
 } rc_material;
 
 /* A pattern or texture (brightfunc, colorfunc, texfunc) or a mixture's coefficient (mixfunc): generated .cal functions that the
@@ -279,7 +280,7 @@ typedef struct rc_rng_key {
   F(rc_hit, source) F(rc_hit, front)                                                           \
   F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(rc_surface, object)      \
   F(rc_surface, flags) F(rc_surface, clip) F(rc_surface, slots) F(rc_surface, pad2)                                                     \
-  F(rc_material, type) F(rc_material, args) F(rc_material, nargs) F(rc_material, alt) F(rc_material, patterns) F(rc_material, npatterns) F(rc_material, back) F(rc_material, pad1) F(rc_pattern, type) F(rc_pattern, args) F(rc_pattern, nargs) F(rc_pattern, xform) F(rc_pattern, object)          \
+  F(rc_material, type) F(rc_material, args) F(rc_material, nargs) F(rc_material, alt) F(rc_material, patterns) F(rc_material, npatterns) F(rc_material, back) F(rc_material, func) F(rc_pattern, type) F(rc_pattern, args) F(rc_pattern, nargs) F(rc_pattern, xform) F(rc_pattern, object)          \
   F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(rc_source, emit)    \
   F(rc_source, spot) F(rc_source, kind) F(rc_source, flags) F(rc_source, surface)              \
   F(rc_source, verts) F(rc_source, nverts) F(rc_source, spot_focus) F(rc_source, parent)       \

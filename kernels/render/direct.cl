@@ -14,6 +14,11 @@
  * pad0 = number of tested requests before it), then empty records (source RC_NONE, pad0 0,
  * contribution 0) that are neither traced nor added. */
 
+struct rc_brdf;
+#ifdef RADCL_HAS_FUNC_MATERIALS
+#include "materials/brdf_func.cl"
+#endif
+
 /* Potential brightness of a candidate, kept in its contrib.w until the selection is made. */
 static inline int rc_shadow_before(global const rc_shadow* a, global const rc_shadow* b) {
   return a->contrib.w < b->contrib.w; /* min-heap order: the heap sort leaves them descending */
@@ -126,10 +131,11 @@ static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* 
 #endif
 
 /* Direct contributions of every source sample (`known`: brightness of what the ray's own value
- * already holds, Radiance's r->rcol, for the threshold). */
-static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, const rc_ray* r,
-                      float3 p, float3 n, float3 d, int flat, float3 coef, float known,
-                      rc_rng_key key) {
+ * already holds, Radiance's r->rcol, for the threshold), for a normal material m or (m null) a
+ * BRDF material b. */
+static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, struct rc_brdf* b,
+                      const rc_ray* r, float3 p, float3 n, float3 d, int flat, float3 coef,
+                      float known, rc_rng_key key) {
   if (o->super) return; /* the -as pass writes only super-samples */
   const rc_params* P = &S->params;
   float eps = P->spec.z;
@@ -137,7 +143,14 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
   uint first = o->nshadow;
   int select = P->direct.z > 0.0f;
   /* Translucent surfaces see sources on both sides: no horizon test. */
-  float3 hn = m->trans > RC_FTINY ? (float3)(0.0f) : n;
+  int two_sided;
+#ifdef RADCL_HAS_FUNC_MATERIALS
+  if (b)
+    two_sided = rc_brdf_two_sided(b);
+  else
+#endif
+    two_sided = m->trans > RC_FTINY;
+  float3 hn = two_sided ? (float3)(0.0f) : n;
   for (uint s = 0; s < P->nsources; ++s) {
     global const rc_source* src = S->sources + s;
     /* Radiance subdivides less for rays that matter less: -ds scales with 1/weight. */
@@ -159,7 +172,13 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, c
       if (src->flags & RC_SRCF_VIRTUAL)
         ls *= rc_virtual_path(S->sources, S->mirrors, S->verts, src, p, l);
       if (rc_max3(ls) <= 0.0f) continue;
-      float3 v = rc_ward_iso_direct(m, ls, l, omega, n, d, flat);
+      float3 v;
+#ifdef RADCL_HAS_FUNC_MATERIALS
+      if (b)
+        v = ls * rc_brdf_direct(b, S->args, l, omega);
+      else
+#endif
+        v = rc_ward_iso_direct(m, ls, l, omega, n, d, flat);
       float3 c = v * coef;
       if (rc_max3(c) <= 0.0f) continue;
       rc_emit_shadow(o, p, l, eps, dist, c, r, s);

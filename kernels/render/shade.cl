@@ -490,7 +490,7 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
     known += rc_ambient(S, o, r, p, -n, m.tcolor * (tblt ? m.trans : m.tdiff), dumb, key, 1u << 20);
   }
 
-  rc_direct(S, o, &m, r, p, n, d, flat, r->coef.xyz, rc_bright(known), key);
+  rc_direct(S, o, &m, 0, r, p, n, d, flat, r->coef.xyz, rc_bright(known), key);
 
   if (!rough) {
     if (rc_max3(m.specular) > RC_FTINY)
@@ -508,6 +508,10 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
       rc_gauss_sample(o, r, p, n, d, m.alpha2, m.tcolor * m.tspec, 0, P, key, 40, 60);
   }
 }
+
+#ifdef RADCL_HAS_FUNC_MATERIALS
+#include "materials/brdf_shade.cl"
+#endif
 
 #ifdef RADCL_HAS_GLASS
 /* glass: one straight transmitted ray weighted by T, one mirror ray weighted by R. */
@@ -624,6 +628,13 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
     return;
   }
 
+#ifdef RADCL_HAS_FUNC_MATERIALS
+  if (mat.type == RC_OBJ_BRTDFUNC) { /* both sides are real: no back-face rule */
+    rc_shade_brtdfunc(S, o, &mat, &r, &h, key);
+    return;
+  }
+#endif
+
   float3 n = h.nrm.xyz;
   if (!h.front) {
     if (!(P->flags & RC_PF_BV)) { /* back faces invisible: continue through */
@@ -642,6 +653,16 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
 #ifdef RADCL_HAS_GLASS
   case RC_OBJ_GLASS:
     rc_shade_glass(S, o, &mat, &r, &h, n, key);
+    break;
+#endif
+#ifdef RADCL_HAS_FUNC_MATERIALS
+  case RC_OBJ_PLASFUNC:
+  case RC_OBJ_METFUNC:
+  case RC_OBJ_TRANSFUNC:
+  case RC_OBJ_PLASDATA:
+  case RC_OBJ_METDATA:
+  case RC_OBJ_TRANSDATA:
+    rc_shade_brdf2(S, o, &mat, &r, &h, n, key);
     break;
 #endif
 #ifdef RADCL_HAS_MIRROR
@@ -994,6 +1015,11 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       coef = g.trans * pcol;
       break;
     }
+#endif
+#ifdef RADCL_HAS_FUNC_MATERIALS
+    case RC_OBJ_BRTDFUNC: /* its transmission expressions, on either side */
+      if (!rc_brtdfunc_shadow(S, &m, d, h, pcol, pert, &coef)) return RC_SH_BLOCKED;
+      break;
 #endif
 #if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
     case RC_OBJ_DIELECTRIC:

@@ -1,5 +1,6 @@
 #include "radcl/render/compiled_scene.h"
 
+#include "radcl/render/func_materials.h"
 #include "radcl/render/pattern_compiler.h"
 #include <tuple>
 
@@ -30,7 +31,7 @@ bool supported_material(rc_object_type t) {
   case RC_OBJ_ANTIMATTER:
     return true;
   default:
-    return false;
+    return is_func_material(t);
   }
 }
 
@@ -83,6 +84,7 @@ public:
       out_.features.define("RADCL_HAS_PATTERNS");
       if (patterns_.has_data()) out_.features.define("RADCL_HAS_PATTERN_DATA");
       if (patterns_.has_text()) out_.features.define("RADCL_HAS_TEXT");
+      if (patterns_.has_brdf()) out_.features.define("RADCL_HAS_FUNC_MATERIALS");
       out_.features.add_code(patterns_.source());
     }
     // -i/-I: plastic (pi, pi, pi) without specular reflects radiance equal to irradiance.
@@ -251,16 +253,20 @@ private:
   std::uint32_t patterned(const scene::SceneDescription& sd, std::int32_t m,
                           const std::vector<std::int32_t>& pats, const geometry::Placement& pl) {
     std::uint32_t base = material(sd, m);
-    if (pats.empty()) return base;
-    // A pattern inside an instance or mesh is placed with it.
+    // A pattern inside an instance or mesh is placed with it, and so is a BRDF material's
+    // function record.
     bool placed = placed_by(sd, pl);
+    std::array<std::array<double, 4>, 4> id{
+        {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    bool func = base != RC_NONE && out_.materials[base].func != RC_NONE && placed &&
+                (pl.to_world != id || pl.scale != 1.0);
+    if (pats.empty() && !func) return base;
     auto key = std::make_tuple(&sd, m, pats, placed ? &pl : nullptr);
     if (auto it = patterned_.find(key); it != patterned_.end()) return it->second;
     rc_material copy = out_.materials[base];
+    if (func) copy.func = func_record(sd, m, &pl);
     copy.patterns = static_cast<std::uint32_t>(out_.patterns.size());
     copy.npatterns = static_cast<std::uint32_t>(pats.size());
-    std::array<std::array<double, 4>, 4> id{
-        {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
     for (std::int32_t p : pats) {
       out_.patterns.push_back(
           patterns_.compile(sd, p, placed ? pl.to_world : id, placed ? pl.scale : 1.0, out_.args));
@@ -270,6 +276,16 @@ private:
     auto idx = static_cast<std::uint32_t>(out_.materials.size() - 1);
     patterned_[key] = idx;
     return idx;
+  }
+
+  // The function record of BRDF material `m` (placed by `pl` if not null).
+  std::uint32_t func_record(const scene::SceneDescription& sd, std::int32_t m,
+                            const geometry::Placement* pl) {
+    std::array<std::array<double, 4>, 4> id{
+        {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    out_.patterns.push_back(
+        patterns_.compile(sd, m, pl ? pl->to_world : id, pl ? pl->scale : 1.0, out_.args));
+    return static_cast<std::uint32_t>(out_.patterns.size() - 1);
   }
 
   std::uint32_t clip_bit(const ModKey& key) {
@@ -343,6 +359,7 @@ private:
     m.args = static_cast<std::uint32_t>(out_.args.size());
     m.nargs = static_cast<std::uint32_t>(args.size());
     m.alt = alt;
+    m.func = RC_NONE;
     out_.args.insert(out_.args.end(), args.begin(), args.end());
     out_.materials.push_back(m);
     return static_cast<std::uint32_t>(out_.materials.size() - 1);
@@ -378,6 +395,10 @@ private:
     out_.features.add(o.type);
     std::uint32_t id =
         push_material(o.type, std::vector<float>(o.fargs.begin(), o.fargs.end()), alt);
+    if (shading_ && is_func_material(static_cast<rc_object_type>(o.type))) {
+      std::uint32_t rec = func_record(sd, obj, nullptr);
+      out_.materials[id].func = rec;
+    }
     ids_[key] = id;
     return id;
   }

@@ -6,6 +6,7 @@
 #include "radcl/calc/codegen.h"
 #include "radcl/calc/library.h"
 #include "radcl/calc/program.h"
+#include "radcl/render/func_materials.h"
 #include "radcl/render/pattern_data.h"
 #include "radcl/scene/object_type.h"
 #include "radcl/scene/raypath.h"
@@ -207,6 +208,8 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
     first_xf = o.sargs.size();
   } else if (is_data(type)) {
     desc = compile_data(o, where, p, args, first_xf);
+  } else if (is_func_material(type)) {
+    desc = compile_brdf(o, where, args, first_xf);
   } else {
     // mixfunc: foreground and background come before its coefficient.
     const std::size_t first = type == RC_OBJ_MIXFUNC ? 2 : 0;
@@ -259,12 +262,12 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
 std::string PatternCompiler::source() {
   if (empty()) return "";
   if (!gen_) gen_ = std::make_unique<calc::CodeGenerator>(*program_); // text patterns alone
-  std::string out = gen_->source();
+  std::string out = gen_->source() + brdf_source();
   out += "\nrc_calc_real rc_pattern_call(uint id, rc_calc_env* e) {\n  switch (id) {\n";
   for (std::size_t i = 0; i < names_.size(); ++i)
     out += "  case " + std::to_string(i) + "u:\n    return " + names_[i] + "(e);\n";
   out += "  }\n  return (rc_calc_real)0;\n}\n";
-  if (fnames_.empty()) return out;
+  if (!has_data()) return out;
   // Functions of interpolated data: own channel value v, or all three (a, b, c).
   out += "\nrc_calc_real rc_pattern_fcall(uint id, rc_calc_env* e, rc_calc_real v, rc_calc_real "
          "a,\n                              rc_calc_real b, rc_calc_real c) {\n  switch (id) {\n";

@@ -39,11 +39,14 @@ public:
                      const std::array<std::array<double, 4>, 4>& to_world, double scale,
                      std::vector<float>& args);
 
-  bool empty() const { return names_.empty() && text_.empty(); }
-  // Whether a data pattern was compiled (the kernels then need render/pattern_data.cl).
-  bool has_data() const { return !fnames_.empty(); }
+  // Whether nothing was compiled (no generated code, no dispatchers, no text).
+  bool empty() const { return !gen_ && text_.empty(); }
+  // Whether data were loaded (the kernels then need render/pattern_data.cl).
+  bool has_data() const { return !fnames_.empty() || !data_.empty(); }
   // Whether a text pattern was compiled (render/text.cl).
   bool has_text() const { return !text_.empty(); }
+  // Whether a BRDF material's record was compiled (render/func_materials.cpp).
+  bool has_brdf() const { return brdf_used_; }
   // The generated functions and their dispatcher (nothing when no pattern was compiled).
   std::string source();
 
@@ -68,6 +71,13 @@ private:
                           std::vector<float>& args, std::size_t& dims);
   std::array<std::uint32_t, 3> picture(const std::string& file, const std::string& where,
                                        std::vector<float>& args);
+  // The BRDF materials (plasfunc .. transdata, BRTDfunc), in render/func_materials.cpp: their
+  // string arguments, as compile_data, and their dispatcher rc_brdf_call().
+  std::vector<std::uint32_t> compile_brdf(const scene::Object& o, const std::string& where,
+                                          std::vector<float>& args, std::size_t& transform);
+  std::uint32_t request_brdf(const std::string& name, int nargs, const std::string& context,
+                             const std::string& where);
+  std::string brdf_source() const;
 
   std::array<double, 3> centre_;
   std::unique_ptr<calc::Program> program_;
@@ -80,6 +90,9 @@ private:
   std::map<std::string, std::pair<std::uint32_t, std::size_t>> data_; // file -> (offset, dims)
   std::map<std::string, std::array<std::uint32_t, 3>> pictures_;      // file -> channel offsets
   TextPatterns text_;
+  bool brdf_used_ = false;
+  std::map<std::tuple<std::string, int, std::string>, std::uint32_t> bids_; // (name, n, ctx)
+  std::vector<std::pair<std::string, int>> bnames_; // rc_brdf_call number -> (function, n)
 };
 
 } // namespace radcl::render
