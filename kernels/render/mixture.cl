@@ -80,6 +80,17 @@ static void rc_mix_start(const rc_scene_args* S, rc_mix_walk* w, const rc_materi
  * random numbers from a stream of its own. */
 static void rc_shade_mixture(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h,
                              const rc_material* mat, const rc_surface* surf, rc_rng_key key) {
+  const rc_params* P = &S->params;
+  uint kind = r.flags & RC_RAY_KIND_MASK;
+  /* -i: Radiance's raytirrad makes a mixture an irradiance meter whole, whatever its sides. */
+  if ((P->flags & RC_PF_IRRAD_I) && (kind == RC_RAY_PRIMARY || kind == RC_RAY_TRANSMITTED) &&
+      r.depth == 0 && !(rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR)) && h.pos.w >= 0.0f) {
+    rc_apply_medium(o, &r, o->cext, h.pos.w);
+    rc_material m = S->materials[P->irradiance_material];
+    int flat = surf->type == RC_OBJ_POLYGON || surf->type == RC_OBJ_RING;
+    rc_shade_normal(S, o, &m, &r, &h, h.front ? h.nrm.xyz : -h.nrm.xyz, flat, key);
+    return;
+  }
   float3 cext = o->cext;
   rc_mix_walk w;
   rc_mix_start(S, &w, mat, r.dir.xyz, &h);

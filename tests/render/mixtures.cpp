@@ -73,7 +73,8 @@ protected:
   }
   // The radiance seen straight down from z = 2 at each (x, y), in a scene of a sun overhead,
   // the test modifiers and `rest` (rtrace -ab 0 -dj 0).
-  std::vector<Rgb> render(const std::string& rest, const std::vector<std::array<double, 2>>& at) {
+  std::vector<Rgb> render(const std::string& rest, const std::vector<std::array<double, 2>>& at,
+                          bool irradiance = false) {
     std::ofstream(dir / "scene.rad") << "void light sunmat 0 0 3 1000 1000 1000\n"
                                      << "sunmat source sun 0 0 4 0 0 1 1\n"
                                      << kModifiers << rest << "\n";
@@ -81,6 +82,7 @@ protected:
     render::RenderSettings st;
     st.ab = 0;
     st.dj = 0;
+    st.irradiance_i = irradiance;
     render::Renderer r(ls, st, device::default_context());
     std::vector<render::PrimaryRay> pr;
     for (const auto& p : at)
@@ -291,4 +293,14 @@ TEST_F(Mixtures, Errors) {
         "nested more than 4 deep (radcl's limit)");
   fails("void antimatter am 1 ga 0 0\nvoid mixfunc m 4 am gb 0.5 . 0 0\n" + floor("m"),
         "in a mixture is not supported yet");
+}
+
+// -i: a mixture is an irradiance meter whole, even with a clear or void side (raytirrad).
+TEST_F(Mixtures, IrradianceMeterAtAMixture) {
+  Rgb meter = render("void plastic p 0 0 5 0.5 0.5 0.5 0 0\n" + floor("p"), {{3, 2}}, true)[0];
+  ASSERT_GT(meter[0], 0);
+  Rgb mixed =
+      render("void glass gl 0 0 3 0.9 0.9 0.9\nvoid mixfunc m 4 gl void 0.5 . 0 0\n" + floor("m"),
+             {{3, 2}}, true)[0];
+  expect_rgb(mixed, meter);
 }
