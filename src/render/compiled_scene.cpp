@@ -138,8 +138,7 @@ private:
     const scene::Object& mo = sd.objects[w.material];
     if (in_mixture && mo.type == RC_OBJ_ANTIMATTER)
       throw FatalError("material type \"antimatter\" of \"" + mo.name +
-                       "\" in a mixture is not "
-                       "supported yet");
+                       "\" in a mixture is not supported yet");
     std::vector<std::int32_t> own = walk_texture(sd, w.material, surface);
     prog.insert(prog.end(), own.begin(), own.end());
     return patterned(sd, w.material, prog, pl);

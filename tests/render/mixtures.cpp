@@ -177,8 +177,7 @@ TEST_F(Mixtures, MixpictUsesThePictureColour) {
 // whether the mixture comes before the material or after it (in its own modifiers).
 TEST_F(Mixtures, PatternSidesBlendTheColours) {
   Rgb want = times(kGd, mix(0.3, kCa, kCb));
-  expect_rgb(render1("void mixfunc m 4 ca cb 0.3 . 0 0\nm glow g 0 0 4 1 1 1 0\n" + floor("g")),
-             want);
+  // After the material (among its own modifiers), then before it.
   expect_rgb(render1("void mixfunc m 4 ca cb 0.3 . 0 0\nm glow g 0 0 4 1 1 1 0\n" + floor("g")),
              want);
   expect_rgb(render1("void glow g 0 0 4 1 1 1 0\ng mixfunc m 4 ca cb 0.3 . 0 0\n" + floor("m")),
