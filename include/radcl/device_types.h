@@ -156,6 +156,15 @@ typedef struct rc_pattern {
   rc_u32 object;  /* object number, for messages */
 } rc_pattern;
 
+/* Mixtures (mixfunc, mixdata, mixpict). One whose sides reach materials is a material of type
+ * mixfunc (alt: foreground, back: background, patterns: its coefficient's record); one with only
+ * patterns on its sides is a blend in a material's pattern list: its coefficient's record, the
+ * foreground's patterns, a record of type RC_PATTERN_MIX_BACK, the background's, a record of
+ * type RC_PATTERN_MIX_END. Either may nest RC_MIX_MAX_DEPTH deep (radcl's limit). */
+#define RC_MIX_MAX_DEPTH 4
+#define RC_PATTERN_MIX_BACK 0x100u
+#define RC_PATTERN_MIX_END 0x101u
+
 /* Light-source geometry kinds. */
 #define RC_SRC_SPHERE 0u   /* sphere: pos = centre, pos.w = radius */
 #define RC_SRC_FLAT 1u     /* polygon or ring: pos = centre, axis = normal */

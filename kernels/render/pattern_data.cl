@@ -74,21 +74,30 @@ static rc_calc_real rc_data_value(global const float* A, uint off, const rc_calc
   return sum;
 }
 
-/* A data pattern at a hit whose ray variables are in e: x is its transform and descriptor in
- * the argument buffer. Multiplies *pcol or adds to *pert; a compute error changes nothing. */
-static void rc_apply_data(const rc_scene_args* S, const rc_pattern* pt, global const float* x,
-                          rc_calc_env* e, float3* pcol, float3* pert) {
+/* The values of a data pattern's data sets at its coordinates (for one data set, v[0] copied
+ * to all three): x is its transform and descriptor in the argument buffer, e its ray variables.
+ * Returns 0 after a compute error in a coordinate. */
+static int rc_data_values(const rc_scene_args* S, const rc_pattern* pt, global const float* x,
+                          rc_calc_env* e, rc_calc_real* v) {
   global const float* dsc = x + 25;
   uint n = min(as_uint(dsc[0]), (uint)RC_DATA_MAXDIM);
   rc_calc_real pnt[RC_DATA_MAXDIM];
   for (uint k = 0; k < n; ++k)
     pnt[k] = rc_pattern_call(as_uint(dsc[1 + k]), e);
-  if (e->error) return;
+  if (e->error) return 0;
   global const float* data = dsc + 1 + n;
-  rc_calc_real v[3];
+  int one = pt->type == RC_OBJ_BRIGHTDATA || pt->type == RC_OBJ_MIXDATA;
   for (uint c = 0; c < 3; ++c)
-    v[c] = c == 0 || pt->type != RC_OBJ_BRIGHTDATA ? rc_data_value(S->args, as_uint(data[c]), pnt)
-                                                   : v[0];
+    v[c] = c == 0 || !one ? rc_data_value(S->args, as_uint(data[c]), pnt) : v[0];
+  return 1;
+}
+
+/* A data pattern at a hit whose ray variables are in e: x is its transform and descriptor in
+ * the argument buffer. Multiplies *pcol or adds to *pert; a compute error changes nothing. */
+static void rc_apply_data(const rc_scene_args* S, const rc_pattern* pt, global const float* x,
+                          rc_calc_env* e, float3* pcol, float3* pert) {
+  rc_calc_real v[3];
+  if (!rc_data_values(S, pt, x, e, v)) return;
   if (pt->type == RC_OBJ_BRIGHTDATA) {
     float b = (float)rc_pattern_fcall(pt->func[0], e, v[0], v[0], v[1], v[2]);
     if (!e->error) *pcol *= b;
@@ -105,4 +114,13 @@ static void rc_apply_data(const rc_scene_args* S, const rc_pattern* pt, global c
   } else {
     *pcol *= r;
   }
+}
+
+/* mixdata's coefficient, its function of the interpolated value, and mixpict's, its function
+ * of the picture's colour (red alone for a function of fewer than 3 parameters). A compute
+ * error sets e->error. */
+static rc_calc_real rc_data_coef(const rc_scene_args* S, const rc_pattern* pt, rc_calc_env* e) {
+  rc_calc_real v[3];
+  if (!rc_data_values(S, pt, S->args + pt->xform, e, v)) return 0;
+  return rc_pattern_fcall(pt->func[0], e, v[0], v[0], v[1], v[2]);
 }

@@ -682,39 +682,7 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
 }
 
 #ifdef RADCL_HAS_MIXFUNC
-/* A mixfunc (Radiance's raymixture): each side with a non-zero share shades the hit as if alone,
- * its coefficients and weight scaled by its share, so the returned radiance is the blend; a side
- * without material lets its share of the ray through. The background draws its random numbers
- * from a stream of its own. */
-static void rc_shade_mixture(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h,
-                             const rc_material* mat, const rc_surface* surf, rc_rng_key key) {
-  float c;
-  if (!rc_mix_coef(S, mat, r.dir.xyz, &h, &c)) { /* compute error: no material */
-    rc_apply_medium(o, &r, o->cext, h.pos.w);
-    if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, &S->params, key);
-    return;
-  }
-  float3 cext = o->cext;
-  for (int side = 0; side < 2; ++side) {
-    float share = side ? 1.0f - c : c;
-    if (share <= RC_FTINY) continue;
-    uint m = side ? mat->back : mat->alt;
-    rc_ray sr = r;
-    sr.coef *= share;
-    rc_rng_key k = key;
-    if (side) k.sample = rc_child_sample(key.sample ^ 0x6D1F3A27u, 0xB0u);
-    o->cext = cext;
-    o->wfac = 1.0f;
-    o->pcol = (float3)(1.0f);
-    o->pert = (float3)(0.0f);
-    if (m == RC_NONE) {
-      rc_apply_medium(o, &sr, o->cext, h.pos.w);
-      if (h.pos.w >= 0.0f) rc_pass(o, &sr, &h, &S->params, k);
-    } else {
-      rc_shade_material(S, o, sr, h, S->materials[m], surf, k);
-    }
-  }
-}
+#include "render/mixture.cl"
 #endif
 
 static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) {
@@ -863,50 +831,6 @@ kernel void rc_accumulate(global const float4* immediate, global const uint* sha
 #define RC_SH_STATUS 3u
 #define RC_SH_BENT 4u  /* direction changed by refraction: the source must be re-checked */
 #define RC_SH_LATER 8u /* not the first segment */
-
-#ifdef RADCL_HAS_MIXFUNC
-/* What one side of a mixture lets through of a shadow ray: all (void), a clear material's
- * straight transmission, or nothing. */
-static float3 rc_shadow_side(const rc_scene_args* S, uint idx, float3 d, const rc_hit* h) {
-  if (idx == RC_NONE) return (float3)(1.0f);
-  rc_material m = S->materials[idx];
-  float3 pcol = (float3)(1.0f), pert = (float3)(0.0f);
-  if (m.npatterns) rc_apply_patterns(S, &m, d, h, &pcol, &pert);
-  int back_pass = !h->front && !(S->params.flags & RC_PF_BV);
-  float3 n = h->front ? h->nrm.xyz : -h->nrm.xyz;
-  global const float* a = S->args + m.args;
-  switch (m.type) {
-#ifdef RADCL_HAS_TRANS
-  case RC_OBJ_TRANS: {
-    if (back_pass) return (float3)(1.0f);
-    rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]) * pcol, a, -dot(d, n));
-    return rc_trans_pure(&w) ? w.tcolor * w.tspec : (float3)(0.0f);
-  }
-#endif
-#ifdef RADCL_HAS_GLASS
-  case RC_OBJ_GLASS: {
-    if (back_pass) return (float3)(1.0f);
-    rc_glass g = rc_glass_setup(a, m.nargs, -dot(d, n));
-    return g.hastrans ? g.trans * pcol : (float3)(0.0f);
-  }
-#endif
-  default:
-    return (float3)(0.0f);
-  }
-}
-
-/* A shadow ray through a mixture: the sides' transmissions blended by the coefficient (a
- * compute error leaves no material: the ray passes). */
-static float3 rc_shadow_mix(const rc_scene_args* S, const rc_material* m, float3 d,
-                            const rc_hit* h) {
-  float c;
-  if (!rc_mix_coef(S, m, d, h, &c)) return (float3)(1.0f);
-  float3 t = (float3)(0.0f);
-  if (c > RC_FTINY) t += c * rc_shadow_side(S, m->alt, d, h);
-  if (c < 1.0f - RC_FTINY) t += (1.0f - c) * rc_shadow_side(S, m->back, d, h);
-  return t;
-}
-#endif
 
 static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, uint state) {
   const rc_params* P = &S->params;

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <set>
 
+#include "radcl/render/mixture_chain.h"
 #include "radcl/scene/material_chain.h"
 #include "radcl/util/error.h"
 
@@ -33,11 +34,6 @@ bool supported_material(rc_object_type t) {
   default:
     return is_func_material(t);
   }
-}
-
-// Mixtures handled by the mixfunc machinery (mixtext's coefficient is its text mask).
-bool is_mix(std::uint32_t t) {
-  return t == RC_OBJ_MIXFUNC || t == RC_OBJ_MIXTEXT;
 }
 
 // Limits of the rays' antimatter state (rc_ray.clip and rc_ray.inside).
@@ -126,109 +122,51 @@ private:
            std::uint32_t>
       mixtures_;
 
-  // The patterns and textures that apply to a surface whose modifier is `mod`: those between it
-  // and its material, then the material's own (Radiance's rayshade, then raytexture). Types not
-  // handled yet are fatal, a mixture after the material too; one before it ends the list.
-  std::vector<std::int32_t> chain_patterns(const scene::SceneDescription& sd, std::int32_t mod) {
-    std::vector<std::int32_t> out;
-    bool past_material = false;
-    for (std::size_t steps = 0; mod != scene::kVoid && steps <= sd.objects.size(); ++steps) {
-      std::int32_t t = scene::alias_target(sd, mod);
-      if (t == scene::kVoid) break;
-      const scene::Object& o = sd.objects[t];
-      if (is_mix(o.type) && !past_material) break;
-      if (scene::is_material(o.type)) {
-        if (past_material) break; // a second material is never reached
-        past_material = true;
-        mod = o.modifier;
-        continue;
-      }
-      if (!PatternCompiler::supported(static_cast<rc_object_type>(o.type)))
-        throw FatalError(std::string(scene::type_name(o.type)) + " \"" + o.name +
-                         "\" is not supported yet");
-      out.push_back(t);
-      mod = sd.objects[mod].modifier;
-    }
-    return out;
-  }
-
-  // The mixfunc in the chain from `mod` before any material, else kVoid.
-  static std::int32_t chain_mixture(const scene::SceneDescription& sd, std::int32_t mod) {
-    for (std::size_t steps = 0; mod != scene::kVoid && steps <= sd.objects.size(); ++steps) {
-      std::int32_t t = scene::alias_target(sd, mod);
-      if (t == scene::kVoid || scene::is_material(sd.objects[t].type)) break;
-      if (is_mix(sd.objects[t].type)) return t;
-      mod = sd.objects[mod].modifier;
-    }
-    return scene::kVoid;
-  }
-
-  // The name reported as a surface's material (Radiance's findmaterial): its first material, a
-  // mixture before it (the de facto material), or void.
-  static std::string material_name(const scene::SceneDescription& sd, std::int32_t mod,
-                                   std::int32_t m) {
-    std::int32_t mix = chain_mixture(sd, mod);
-    if (mix != scene::kVoid && sd.objects[mix].modifier == scene::kVoid)
-      return sd.objects[mix].name;
-    return m == scene::kVoid ? "void" : sd.objects[m].name;
-  }
-
   // Whether the pattern records of `sd` are placed by `pl` (inside its instance or mesh).
   static bool placed_by(const scene::SceneDescription& sd, const geometry::Placement& pl) {
     return &sd == pl.scene || (pl.mesh && &sd == &pl.mesh->objects);
   }
 
-  // The materials a mixture can choose between so far.
-  static bool mixable(rc_object_type t) {
-    return t == RC_OBJ_PLASTIC || t == RC_OBJ_METAL || t == RC_OBJ_TRANS || t == RC_OBJ_MIRROR ||
-           t == RC_OBJ_GLASS;
+  // Where a modifier walk ends (Radiance's rayshade): the material reached, with the patterns
+  // before it (`prefix`, then the walk's own) and its own modifiers' (raytexture); a mixture of
+  // materials; or nothing (RC_NONE: the ray goes through). `in_mixture`: a side of a mixture,
+  // which may not be antimatter.
+  std::uint32_t chain_end(const scene::SceneDescription& sd, const ChainWalk& w,
+                          const std::vector<std::int32_t>& prefix, const geometry::Placement& pl,
+                          const std::string& surface, bool in_mixture) {
+    std::vector<std::int32_t> prog = prefix;
+    prog.insert(prog.end(), w.program.begin(), w.program.end());
+    if (w.mixture != scene::kVoid) return mixture(sd, w.mixture, prog, pl, surface);
+    if (w.material == scene::kVoid) return RC_NONE;
+    const scene::Object& mo = sd.objects[w.material];
+    if (in_mixture && mo.type == RC_OBJ_ANTIMATTER)
+      throw FatalError("material type \"antimatter\" of \"" + mo.name +
+                       "\" in a mixture is not supported yet");
+    std::vector<std::int32_t> own = walk_texture(sd, w.material, surface);
+    prog.insert(prog.end(), own.begin(), own.end());
+    return patterned(sd, w.material, prog, pl);
   }
 
-  // A mixfunc `mix` met after the patterns `prefix` (Radiance's raymixture): a material of type
-  // mixfunc whose sides are compiled materials (each with the prefix, its own chain's patterns
-  // and its material's), RC_NONE for a side without material (it lets the ray through), and
-  // whose coefficient is a pattern record.
+  // A mixture with a material on a side, met after the pattern program `prefix` (Radiance's
+  // raymixture): a material of type mixfunc whose sides are what each side's walk ends in
+  // (each with the prefix), and whose coefficient is a pattern record.
   std::uint32_t mixture(const scene::SceneDescription& sd, std::int32_t mix,
-                        const std::vector<std::int32_t>& prefix, const geometry::Placement& pl) {
-    const scene::Object& o = sd.objects[mix];
-    const std::string where = std::string(scene::type_name(o.type)) + " \"" + o.name + "\"";
-    if (o.sargs.size() < 4) throw FatalError("bad # arguments for " + where);
+                        const std::vector<std::int32_t>& prefix, const geometry::Placement& pl,
+                        const std::string& surface) {
+    std::array<std::int32_t, 2> names = mixture_sides(sd, mix);
     std::array<std::uint32_t, 2> side{RC_NONE, RC_NONE};
-    bool any = false;
-    for (int i = 0; i < 2; ++i) {
-      if (o.sargs[i] == "void") continue;
-      std::int32_t smod = sd.last_modifier(mix, o.sargs[i]);
-      if (smod == scene::kVoid)
-        throw FatalError(where + ": undefined modifier \"" + o.sargs[i] + "\"");
-      if (chain_mixture(sd, smod) != scene::kVoid)
-        throw FatalError(where + ": nested mixtures are not supported yet");
-      std::int32_t m = scene::first_material_from(sd, smod);
-      if (m == scene::kVoid) continue; // patterns without a material: transparent
-      const scene::Object& mo = sd.objects[m];
-      if (!mixable(static_cast<rc_object_type>(mo.type)))
-        throw FatalError("material type \"" + std::string(scene::type_name(mo.type)) + "\" of \"" +
-                         mo.name + "\" in " + where + " is not supported yet");
-      std::vector<std::int32_t> pats = prefix;
-      std::vector<std::int32_t> own = chain_patterns(sd, smod);
-      pats.insert(pats.end(), own.begin(), own.end());
-      side[i] = patterned(sd, m, pats, pl);
-      any = true;
-    }
-    if (!any) throw FatalError(where + ": mixtures of patterns or textures are not supported yet");
-    if (o.modifier != scene::kVoid) throw FatalError(where + ": inappropriate modifier");
+    for (int i = 0; i < 2; ++i)
+      side[i] = chain_end(sd, walk_chain(sd, names[i], surface), prefix, pl, surface, true);
     bool placed = placed_by(sd, pl);
     auto key = std::make_tuple(&sd, mix, side[0], side[1], placed ? &pl : nullptr);
     if (auto it = mixtures_.find(key); it != mixtures_.end()) return it->second;
-    std::array<std::array<double, 4>, 4> id{
-        {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
     rc_material mm{};
     mm.type = RC_OBJ_MIXFUNC;
     mm.args = static_cast<std::uint32_t>(out_.args.size());
     mm.alt = side[0];
     mm.back = side[1];
     mm.patterns = static_cast<std::uint32_t>(out_.patterns.size());
-    out_.patterns.push_back(
-        patterns_.compile(sd, mix, placed ? pl.to_world : id, placed ? pl.scale : 1.0, out_.args));
+    out_.patterns.push_back(pattern_record(sd, mix, pl));
     out_.features.add(RC_OBJ_MIXFUNC);
     out_.materials.push_back(mm);
     auto idx = static_cast<std::uint32_t>(out_.materials.size() - 1);
@@ -236,41 +174,57 @@ private:
     return idx;
   }
 
-  // The compiled material of a surface with modifier `mod`, `m` its first material: the plain
-  // material, a copy that carries its patterns, or a mixture.
-  std::uint32_t shading_material(const scene::SceneDescription& sd, std::int32_t mod,
-                                 std::int32_t m, const geometry::Placement& pl) {
-    if (shading_) {
-      std::int32_t mix = chain_mixture(sd, mod);
-      if (mix != scene::kVoid) return mixture(sd, mix, chain_patterns(sd, mod), pl);
-    }
-    std::uint32_t base = material(sd, m);
-    if (!shading_ || base == RC_NONE) return base;
-    return patterned(sd, m, chain_patterns(sd, mod), pl);
+  // The record of pattern (or mixture coefficient) `obj`, placed with `pl` when it is inside
+  // the placed instance or mesh.
+  rc_pattern pattern_record(const scene::SceneDescription& sd, std::int32_t obj,
+                            const geometry::Placement& pl) {
+    static const std::array<std::array<double, 4>, 4> id{
+        {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    bool placed = placed_by(sd, pl);
+    out_.features.add(static_cast<rc_object_type>(sd.objects[obj].type));
+    return patterns_.compile(sd, obj, placed ? pl.to_world : id, placed ? pl.scale : 1.0,
+                             out_.args);
   }
 
-  // Material `m` of `sd` with the patterns `pats` (placed by `pl`).
+  // The compiled material of a surface with modifier `mod`, `m` its first material: the plain
+  // material, a copy that carries its patterns, or a mixture. `surface` names it for messages.
+  std::uint32_t shading_material(const scene::SceneDescription& sd, std::int32_t mod,
+                                 std::int32_t m, const geometry::Placement& pl,
+                                 const std::string& surface) {
+    if (!shading_) return material(sd, m);
+    return chain_end(sd, walk_chain(sd, mod, surface), {}, pl, surface, false);
+  }
+
+  // Material `m` of `sd` with the pattern program `prog` (placed by `pl`): patterns, and the
+  // pattern-only mixtures between their markers (mixture_chain.h).
   std::uint32_t patterned(const scene::SceneDescription& sd, std::int32_t m,
-                          const std::vector<std::int32_t>& pats, const geometry::Placement& pl) {
+                          const std::vector<std::int32_t>& prog, const geometry::Placement& pl) {
     std::uint32_t base = material(sd, m);
+    if (base == RC_NONE) return base;
     // A pattern inside an instance or mesh is placed with it, and so is a BRDF material's
     // function record.
     bool placed = placed_by(sd, pl);
-    std::array<std::array<double, 4>, 4> id{
+    static const std::array<std::array<double, 4>, 4> id{
         {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
-    bool func = base != RC_NONE && out_.materials[base].func != RC_NONE && placed &&
+    bool func = out_.materials[base].func != RC_NONE && placed &&
                 (pl.to_world != id || pl.scale != 1.0);
-    if (pats.empty() && !func) return base;
-    auto key = std::make_tuple(&sd, m, pats, placed ? &pl : nullptr);
+    if (prog.empty() && !func) return base;
+    auto key = std::make_tuple(&sd, m, prog, placed ? &pl : nullptr);
     if (auto it = patterned_.find(key); it != patterned_.end()) return it->second;
     rc_material copy = out_.materials[base];
     if (func) copy.func = func_record(sd, m, &pl);
     copy.patterns = static_cast<std::uint32_t>(out_.patterns.size());
-    copy.npatterns = static_cast<std::uint32_t>(pats.size());
-    for (std::int32_t p : pats) {
-      out_.patterns.push_back(
-          patterns_.compile(sd, p, placed ? pl.to_world : id, placed ? pl.scale : 1.0, out_.args));
-      out_.features.add(static_cast<rc_object_type>(sd.objects[p].type));
+    copy.npatterns = 0;
+    for (std::size_t i = 0; i < prog.size(); ++i, ++copy.npatterns) {
+      if (prog[i] == kMixBack || prog[i] == kMixEnd) {
+        rc_pattern marker{};
+        marker.type = prog[i] == kMixBack ? RC_PATTERN_MIX_BACK : RC_PATTERN_MIX_END;
+        marker.object = RC_NONE;
+        out_.patterns.push_back(marker);
+        continue;
+      }
+      if (prog[i] == kMixBegin) ++i; // the mixture's coefficient record opens the blend
+      out_.patterns.push_back(pattern_record(sd, prog[i], pl));
     }
     out_.materials.push_back(copy);
     auto idx = static_cast<std::uint32_t>(out_.materials.size() - 1);
@@ -438,11 +392,13 @@ private:
       surf = pl.shade_object;
     }
     std::int32_t m = scene::first_material(*msd, surf);
-    s.material = shading_material(*msd, msd->objects[surf].modifier, m, pl);
+    const scene::Object& so = msd->objects[surf];
+    s.material = shading_material(*msd, so.modifier, m, pl,
+                                  std::string(scene::type_name(so.type)) + " \"" + so.name + "\"");
     out_.features.add(o.type);
     std::int32_t mod = msd->objects[surf].modifier;
     push_surface(s, msd->objects[surf].name, mod == scene::kVoid ? "void" : msd->objects[mod].name,
-                 material_name(*msd, mod, m), {msd, mod});
+                 reported_material(*msd, mod), {msd, mod});
   }
 
   // One slot per modifier a mesh's faces may name (slot 0: faces without one).
@@ -456,18 +412,19 @@ private:
       ModKey direct{nullptr, scene::kVoid};
       if (pl.shade_object >= 0) { // the mesh primitive's own modifier overrides its faces'
         std::int32_t m = scene::first_material(*pl.shade_scene, pl.shade_object);
-        s.material = shading_material(*pl.shade_scene,
-                                      pl.shade_scene->objects[pl.shade_object].modifier, m, pl);
+        s.material =
+            shading_material(*pl.shade_scene, pl.shade_scene->objects[pl.shade_object].modifier, m,
+                             pl, "mesh \"" + prim.name + "\"");
         std::int32_t mo = pl.shade_scene->objects[pl.shade_object].modifier;
         direct = {pl.shade_scene, mo};
         if (mo != scene::kVoid) mod = pl.shade_scene->objects[mo].name;
-        mat = material_name(*pl.shade_scene, mo, m);
+        mat = reported_material(*pl.shade_scene, mo);
       } else if (i >= 0) {
         std::int32_t m = scene::first_material_from(mesh.objects, i);
-        s.material = shading_material(mesh.objects, i, m, pl);
+        s.material = shading_material(mesh.objects, i, m, pl, "mesh \"" + prim.name + "\"");
         mod = mesh.materials[i];
         direct = {&mesh.objects, i};
-        mat = material_name(mesh.objects, i, m);
+        mat = reported_material(mesh.objects, i);
       }
       push_surface(s, prim.name, mod, mat, direct);
     }

@@ -30,7 +30,11 @@ Mat4 multiply(const Mat4& a, const Mat4& b) {
 
 bool is_data(rc_object_type t) {
   return t == RC_OBJ_BRIGHTDATA || t == RC_OBJ_COLORDATA || t == RC_OBJ_TEXDATA ||
-         t == RC_OBJ_COLORPICT;
+         t == RC_OBJ_COLORPICT || t == RC_OBJ_MIXDATA || t == RC_OBJ_MIXPICT;
+}
+
+bool is_picture(rc_object_type t) {
+  return t == RC_OBJ_COLORPICT || t == RC_OBJ_MIXPICT;
 }
 
 float bits(std::uint32_t u) {
@@ -45,7 +49,8 @@ PatternCompiler::~PatternCompiler() = default;
 
 bool PatternCompiler::supported(rc_object_type t) {
   return t == RC_OBJ_BRIGHTFUNC || t == RC_OBJ_COLORFUNC || t == RC_OBJ_TEXFUNC || is_data(t) ||
-         t == RC_OBJ_BRIGHTTEXT || t == RC_OBJ_COLORTEXT;
+         t == RC_OBJ_BRIGHTTEXT || t == RC_OBJ_COLORTEXT || t == RC_OBJ_MIXFUNC ||
+         t == RC_OBJ_MIXTEXT;
 }
 
 std::string PatternCompiler::load(const std::string& file, const std::string& where) {
@@ -134,19 +139,23 @@ std::vector<std::uint32_t> PatternCompiler::compile_data(const scene::Object& o,
                                                          std::vector<float>& args,
                                                          std::size_t& transform) {
   const auto type = static_cast<rc_object_type>(o.type);
-  // String arguments (calc-language.md §5.4): functions, data files, function file, coordinates.
-  const std::size_t nfunc = type == RC_OBJ_BRIGHTDATA ? 1 : 3;
-  const std::size_t ndata = type == RC_OBJ_COLORPICT ? 1 : nfunc;
-  const std::size_t file = nfunc + ndata;
-  if (o.sargs.size() < file + 2) throw FatalError("bad # arguments for " + where);
+  // String arguments (calc-language.md §5.4): a mixture's two sides, functions, data files,
+  // function file, coordinates.
+  const bool mix = type == RC_OBJ_MIXDATA || type == RC_OBJ_MIXPICT;
+  const std::size_t first = mix ? 2 : 0;
+  const std::size_t nfunc = type == RC_OBJ_BRIGHTDATA || mix ? 1 : 3;
+  const std::size_t ndata = is_picture(type) ? 1 : nfunc;
+  const std::size_t file = first + nfunc + ndata;
+  if (o.sargs.size() < file + (type == RC_OBJ_MIXPICT ? 3 : 2))
+    throw FatalError("bad # arguments for " + where);
   std::array<std::uint32_t, 3> data{};
   std::size_t dims = 2;
-  if (type == RC_OBJ_COLORPICT) {
-    data = picture(o.sargs[nfunc], where, args);
+  if (is_picture(type)) {
+    data = picture(o.sargs[first + nfunc], where, args);
   } else {
     for (std::size_t i = 0; i < ndata; ++i) {
       std::size_t n = 0;
-      data[i] = data_file(o.sargs[nfunc + i], where, args, n);
+      data[i] = data_file(o.sargs[first + nfunc + i], where, args, n);
       if (i == 0)
         dims = n;
       else if (n != dims)
@@ -163,27 +172,28 @@ std::vector<std::uint32_t> PatternCompiler::compile_data(const scene::Object& o,
   std::vector<std::size_t> coord(dims);
   for (std::size_t i = 0; i < dims; ++i)
     coord[i] = file + 1 + i;
-  if (type == RC_OBJ_COLORPICT) std::swap(coord[0], coord[1]); // v (vertical) is the first axis
+  if (is_picture(type)) std::swap(coord[0], coord[1]); // v (vertical) is the first axis
   for (std::size_t c : coord)
     desc.push_back(request(o.sargs[c], ctx, where));
   desc.insert(desc.end(), data.begin(), data.end());
-  // Functions of the interpolated values: 1 value (own channel) or, for texdata and functions
-  // taking 3 parameters, all three.
+  // Functions of the interpolated values: 1 value (own channel; mixpict's red) or, for texdata
+  // and functions of pictures or colour data taking 3 parameters, all three.
   for (std::size_t i = 0; i < 3; ++i) {
     if (i >= nfunc) {
       p.func[i] = RC_NONE;
       continue;
     }
+    const std::string& fn = o.sargs[first + i];
     int nargs = type == RC_OBJ_TEXDATA ? 3 : 1;
-    if (type == RC_OBJ_COLORDATA || type == RC_OBJ_COLORPICT) {
+    if (type == RC_OBJ_COLORDATA || is_picture(type)) {
       int params = 0;
-      if (const calc::Definition* d = program_->lookup(o.sargs[i], ctx); d && d->function)
+      if (const calc::Definition* d = program_->lookup(fn, ctx); d && d->function)
         params = static_cast<int>(d->params.size());
-      else if (const calc::LibraryFunction* lf = calc::find_library(o.sargs[i]))
+      else if (const calc::LibraryFunction* lf = calc::find_library(fn))
         params = lf->args;
       nargs = params < 3 ? 1 : 3;
     }
-    p.func[i] = request_function(o.sargs[i], nargs, ctx, where);
+    p.func[i] = request_function(fn, nargs, ctx, where);
   }
   // Arguments past the coordinates up to the first starting with '-' are ignored, as Radiance does.
   transform = file + 1 + dims;

@@ -178,7 +178,7 @@ TEST_F(Mixfunc, VoidSideLetsTheLightBehindThrough) {
       flo, 1e-6);
 }
 
-// What is not handled (yet) is refused by name; so is what Radiance refuses.
+// What Radiance refuses (nested, pattern and light sides: tests/render/mixtures.cpp).
 TEST_F(Mixfunc, Errors) {
   auto fails = [&](const std::string& rest, const std::string& want) {
     try {
@@ -189,12 +189,7 @@ TEST_F(Mixfunc, Errors) {
     }
   };
   fails("void mixfunc m 4 red nosuch 0.5 . 0 0\n" + floor("m"), "undefined modifier \"nosuch\"");
-  fails("void mixfunc m 4 red blue 0.5 . 0 0\nvoid mixfunc n 4 m blue 0.5 . 0 0\n" + floor("n"),
-        "nested mixtures are not supported yet");
   fails("void brightfunc b 2 0.5 . 0 0\nb mixfunc m 4 red blue 0.5 . 0 0\n" + floor("m"),
         "mixfunc \"m\": inappropriate modifier");
-  fails("void brightfunc b 2 0.5 . 0 0\nvoid mixfunc m 4 b void 0.5 . 0 0\n" + floor("m"),
-        "not supported yet");
-  fails("void mixfunc m 4 red sunmat 0.5 . 0 0\n" + floor("m"), "\"light\" of \"sunmat\"");
   fails("void mixfunc m 3 red blue 0.5\n0\n0\n" + floor("m"), "bad # arguments");
 }

@@ -151,5 +151,7 @@ TEST_F(Patterns, ErrorsNameThePattern) {
   fails("void brightfunc bf 2 nosuch pat.cal 0 0", "bf", "brightfunc \"bf\"");
   fails("void brightfunc bf 2 bright missing.cal 0 0", "bf", "missing.cal");
   fails("void brightfunc bf 4 bright pat.cal -t 1 0 0", "bf", "bad transform");
-  fails("void mixfunc mf 4 grey grey 0.5 . 0 0", "mf", "mixfunc \"mf\" is not supported yet");
+  // A mixture among the material's own modifiers names sides defined before it.
+  fails("void mixfunc mf 4 grey grey 0.5 . 0 0", "mf",
+        "mixfunc \"mf\": undefined modifier \"grey\"");
 }
