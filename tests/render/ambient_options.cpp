@@ -42,7 +42,7 @@ std::vector<render::PrimaryResult> sphere(render::RenderSettings st, bool meters
   return res;
 }
 
-render::RenderSettings ambient(int ab, double av, List list = List::None,
+render::RenderSettings amb_settings(int ab, double av, List list = List::None,
                                std::vector<std::string> names = {}) {
   render::RenderSettings st;
   st.ab = ab;
@@ -66,9 +66,9 @@ void expect_same(const std::vector<render::PrimaryResult>& a,
 // An excluded modifier takes -av x its diffuse reflectance instead of sampling: the same as no
 // bounce at all, and exactly 0.8 x -av more than with -av 0.
 TEST(AmbientOptions, ExcludedModifierGetsAmbientValue) {
-  auto excluded = sphere(ambient(2, 0.5, List::Exclude, {"sphere_wall"}));
-  auto excluded0 = sphere(ambient(2, 0, List::Exclude, {"sphere_wall"}));
-  auto no_bounce = sphere(ambient(0, 0.5));
+  auto excluded = sphere(amb_settings(2, 0.5, List::Exclude, {"sphere_wall"}));
+  auto excluded0 = sphere(amb_settings(2, 0, List::Exclude, {"sphere_wall"}));
+  auto no_bounce = sphere(amb_settings(0, 0.5));
   expect_same(excluded, no_bounce, "-ae sphere_wall -ab 2 vs -ab 0");
   for (std::size_t i = 0; i < excluded.size(); ++i) {
     ASSERT_TRUE(excluded[i].hit);
@@ -77,8 +77,8 @@ TEST(AmbientOptions, ExcludedModifierGetsAmbientValue) {
         << "ray " << i;
   }
   // Other names leave the wall sampled.
-  auto sampled = sphere(ambient(2, 0.5));
-  expect_same(sphere(ambient(2, 0.5, List::Exclude, {"emitter", "void", "nothing"})), sampled,
+  auto sampled = sphere(amb_settings(2, 0.5));
+  expect_same(sphere(amb_settings(2, 0.5, List::Exclude, {"emitter", "void", "nothing"})), sampled,
               "-ae of other modifiers");
   double mean_s = 0, mean_x = 0;
   for (std::size_t i = 0; i < sampled.size(); ++i) {
@@ -90,13 +90,13 @@ TEST(AmbientOptions, ExcludedModifierGetsAmbientValue) {
 
 // An include list is the opposite: only the listed modifiers are sampled.
 TEST(AmbientOptions, IncludeList) {
-  expect_same(sphere(ambient(2, 0.5, List::Include, {"sphere_wall"})), sphere(ambient(2, 0.5)),
+  expect_same(sphere(amb_settings(2, 0.5, List::Include, {"sphere_wall"})), sphere(amb_settings(2, 0.5)),
               "-ai sphere_wall");
-  expect_same(sphere(ambient(2, 0.5, List::Include, {"emitter"})), sphere(ambient(0, 0.5)),
+  expect_same(sphere(amb_settings(2, 0.5, List::Include, {"emitter"})), sphere(amb_settings(0, 0.5)),
               "-ai emitter");
   // Radiance's list tests the object hit; an -I meter hits none, so it is always sampled.
-  expect_same(sphere(ambient(1, 0.5, List::Exclude, {"sphere_wall"}), true),
-              sphere(ambient(1, 0.5), true), "-I with -ae sphere_wall");
+  expect_same(sphere(amb_settings(1, 0.5, List::Exclude, {"sphere_wall"}), true),
+              sphere(amb_settings(1, 0.5), true), "-I with -ae sphere_wall");
 }
 
 namespace {
