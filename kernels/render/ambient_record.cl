@@ -110,8 +110,8 @@ static void rc_amr_add_edge(const rc_amr_frame* f, global const rc_amb_sample* s
   float3 p0 = s[k0].pnt.xyz, p1 = s[k1].pnt.xyz;
   float2 g;
   float3 h;
-  rc_amr_edge(rc_amr_local(f, p0 - f->o), rc_amr_local(f, p1 - f->o), rc_amr_local(f, p1 - p0),
-              &g, &h);
+  rc_amr_edge(rc_amr_local(f, p0 - f->o), rc_amr_local(f, p1 - f->o), rc_amr_local(f, p1 - p0), &g,
+              &h);
   *grad += w * g;
   *hess += w * h;
 }
@@ -152,8 +152,8 @@ static void rc_amr_mesh_sums(const rc_amr_frame* f, global const rc_amb_sample* 
  * docs/ambient.md). */
 static void rc_amr_axes(float3 h, float maxarad, float2* u0, float2* ra) {
   const float tiny = RC_AMR_FTINY * RC_AMR_FTINY;
-  float mid = 0.5f * (h.x + h.z), half = 0.5f * (h.x - h.z);
-  float disc = half * half + h.y * h.y;
+  float mid = 0.5f * (h.x + h.z), hdif = 0.5f * (h.x - h.z);
+  float disc = hdif * hdif + h.y * h.y;
   bool dbl = disc <= tiny;
   float sq = dbl ? 0.0f : sqrt(disc);
   float lo = mid - sq, hi = mid + sq; /* signed eigenvalues */
@@ -171,8 +171,8 @@ static void rc_amr_axes(float3 h, float maxarad, float2* u0, float2* ra) {
   float vv = dot(v, v);
   if (!(vv > 0.0f)) return;
   v *= rsqrt(vv);
-  if (v.x < 0.0f || (v.x == 0.0f && v.y < 0.0f)) v = -v;
-  *u0 = (float2)(v.y, -v.x); /* so that z x u0 = v */
+  if ((fabs(v.x) >= fabs(v.y) ? v.x : v.y) < 0.0f) v = -v; /* larger component positive */
+  *u0 = (float2)(v.y, -v.x);                               /* so that z x u0 = v */
 }
 
 /* Radiance's ambcorral: sectors (32 of pi/16 around the normal, from u0) in which a perimeter
@@ -278,9 +278,12 @@ kernel void rc_make_record(global const rc_amb_hemi* hemis, global const rc_amb_
   global const rc_amb_sample* s = samples + hp.first;
   uint n2 = hp.ns * hp.ns, ok = 0u;
   float3 sum = (float3)(0.0f);
+  float3 lost = (float3)(0.0f); /* compensated sum: Radiance adds in double */
   for (uint q = 0; q < n2; ++q)
     if (s[q].val.w >= 0.0f) {
-      sum += s[q].val.xyz;
+      float3 y = s[q].val.xyz - lost, t = sum + y;
+      lost = (t - sum) - y;
+      sum = t;
       ++ok;
     }
   rc_amb_record rec;

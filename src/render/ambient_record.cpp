@@ -25,8 +25,8 @@ float ambient_record_weight(int level, double ray_weight) {
 }
 
 rc_amb_hemi make_hemisphere(const std::array<double, 3>& p, const std::array<double, 3>& n,
-                            const std::array<double, 3>& ux, unsigned ns, unsigned first,
-                            int level, double weight, const HemisphereSettings& s) {
+                            const std::array<double, 3>& ux, unsigned ns, unsigned first, int level,
+                            double weight, const HemisphereSettings& s) {
   const std::array<double, 3> uy{n[1] * ux[2] - n[2] * ux[1], n[2] * ux[0] - n[0] * ux[2],
                                  n[0] * ux[1] - n[1] * ux[0]};
   rc_amb_hemi h{};
@@ -56,9 +56,10 @@ MadeRecords RecordMaker::make(std::span<const rc_amb_hemi> hemis,
   MadeRecords out;
   if (hemis.empty()) return out;
   const auto n = static_cast<std::uint32_t>(hemis.size());
-  device::Buffer bh = device::Buffer::from(ctx_, std::vector<rc_amb_hemi>(hemis.begin(), hemis.end()));
-  device::Buffer bs = device::Buffer::from(
-      ctx_, std::vector<rc_amb_sample>(samples.begin(), samples.end()));
+  device::Buffer bh =
+      device::Buffer::from(ctx_, std::vector<rc_amb_hemi>(hemis.begin(), hemis.end()));
+  device::Buffer bs =
+      device::Buffer::from(ctx_, std::vector<rc_amb_sample>(samples.begin(), samples.end()));
   device::Buffer br(ctx_, n * sizeof(rc_amb_record)), bm(ctx_, n * sizeof(rc_amb_made));
   run(bh, bs, n, br, bm);
   ctx_.finish();

@@ -37,8 +37,8 @@ struct HemisphereSettings {
 // An rc_amb_hemi: point p (re-centred) with unit normal n and unit tangent ux (uy = n x ux),
 // ns divisions per axis, samples from index `first`.
 rc_amb_hemi make_hemisphere(const std::array<double, 3>& p, const std::array<double, 3>& n,
-                            const std::array<double, 3>& ux, unsigned ns, unsigned first,
-                            int level, double weight, const HemisphereSettings& s);
+                            const std::array<double, 3>& ux, unsigned ns, unsigned first, int level,
+                            double weight, const HemisphereSettings& s);
 
 struct MadeRecords {
   std::vector<rc_amb_record> records; // one per hemisphere (value and level always set)
