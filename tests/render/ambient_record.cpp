@@ -341,6 +341,10 @@ void expect_matches(const Result& k, const Ref& r, double tol, double gscale) {
   // The axes are defined where the eigenvalues differ clearly.
   if (std::fabs(r.lam[0] - r.lam[1]) > 1e-2 * std::fabs(r.lam[0]) && r.rad[0] < r.rad[1]) {
     EXPECT_GT(std::fabs(dot(f3(k.rec.udir), r.u)), 1 - 1e-6);
+    // u is an eigenvector of the Hessian's tangential block: v'Hu = 0.
+    const D3 u = f3(k.rec.udir), v = cross(f3(k.rec.nrm), u);
+    const D3 hu{dot(r.hess[0], u), dot(r.hess[1], u), dot(r.hess[2], u)};
+    EXPECT_NEAR(dot(v, hu), 0, 1e-4 * std::fabs(r.lam[0]));
   }
   // A flipped u axis (and v) turns the sectors by half a turn.
   std::uint32_t corral = r.corral;
