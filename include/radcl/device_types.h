@@ -268,6 +268,39 @@ typedef struct rc_amb_node {
   rc_u32 pad0;
 } rc_amb_node;
 
+/* One hemisphere of ambient samples to turn into a record (kernels/render/ambient_record.cl,
+ * Radiance's doambient after sampling). ux, uy and nrm are orthonormal, uy = nrm x ux. */
+typedef struct rc_amb_hemi {
+  rc_float4 pos; /* the point (re-centred); w = the weight doambient gets (the record's) */
+  rc_float4 nrm; /* unit normal; w = minimum radius (Radiance's minarad) */
+  rc_float4 ux;  /* tangent the samples' first disc coordinate runs along; w = maximum radius */
+  rc_float4 uy;  /* nrm x ux; w = -aa */
+  rc_u32 first;  /* index of its first sample */
+  rc_u32 ns;     /* divisions per axis: ns*ns samples, i*ns + j, i along uy, j along ux */
+  rc_u32 level;  /* ambient level of the record */
+  rc_u32 pad0;
+} rc_amb_hemi;
+
+/* One stratum of a hemisphere. val.xyz: the stratum's radiance (mean of its samples) / ns^2;
+ * val.w: reciprocal distance of its nearest hit (0: nothing hit), < 0 marks a failed sample.
+ * pnt.xyz: its first sample's hit point (re-centred), clamped to 10 * cube size + 1000 along
+ * the ray as Radiance does; pnt.w unused. */
+typedef struct rc_amb_sample {
+  rc_float4 val;
+  rc_float4 pnt;
+} rc_amb_sample;
+
+/* What rc_make_record says of a hemisphere besides the record. */
+#define RC_AMB_FAILED 0     /* no sample: no value */
+#define RC_AMB_VALUE_ONLY -1 /* a value to use but no record to keep */
+#define RC_AMB_RECORD 1     /* a record */
+typedef struct rc_amb_made {
+  rc_u32 corral; /* sectors of possible light leaks (Radiance's ambcorral) */
+  rc_i32 status; /* RC_AMB_* */
+  rc_u32 pad0;
+  rc_u32 pad1;
+} rc_amb_made;
+
 /* Counter-based random-number key: (primary ray, sample, depth, seed). */
 typedef struct rc_rng_key {
   rc_u32 primary;
@@ -281,7 +314,8 @@ typedef struct rc_rng_key {
 #define RADCL_LAYOUT_STRUCTS(S)                                                                \
   S(rc_float4) S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror)      \
   S(rc_shadow) S(rc_pattern)                                                                                 \
-  S(rc_rng_key) S(rc_params) S(rc_amb_record) S(rc_amb_node)
+  S(rc_rng_key) S(rc_params) S(rc_amb_record) S(rc_amb_node) S(rc_amb_hemi)          \
+  S(rc_amb_sample) S(rc_amb_made)
 #define RADCL_LAYOUT_FIELDS(F)                                                                 \
   F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
   F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside) F(rc_ray, cell)                  \
@@ -303,6 +337,10 @@ typedef struct rc_rng_key {
   F(rc_params, irradiance_material) F(rc_params, ad) F(rc_params, as) F(rc_params, amb)       \
   F(rc_amb_record, pos) F(rc_amb_record, nrm) F(rc_amb_record, udir) F(rc_amb_record, val)     \
   F(rc_amb_record, grad) F(rc_amb_node, lo) F(rc_amb_node, hi) F(rc_amb_node, skip)            \
-  F(rc_amb_node, first) F(rc_amb_node, count) F(rc_amb_node, pad0)
+  F(rc_amb_node, first) F(rc_amb_node, count) F(rc_amb_node, pad0)              \
+  F(rc_amb_hemi, pos) F(rc_amb_hemi, nrm) F(rc_amb_hemi, ux) F(rc_amb_hemi, uy)                \
+  F(rc_amb_hemi, first) F(rc_amb_hemi, ns) F(rc_amb_hemi, level) F(rc_amb_hemi, pad0)          \
+  F(rc_amb_sample, val) F(rc_amb_sample, pnt) F(rc_amb_made, corral) F(rc_amb_made, status)    \
+  F(rc_amb_made, pad0) F(rc_amb_made, pad1)
 
 #endif /* RADCL_DEVICE_TYPES_H */
