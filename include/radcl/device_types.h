@@ -61,6 +61,8 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
 #define RC_RAY_TRANSMITTED 2u /* pure specular transmission */
 #define RC_RAY_SPECULAR 3u    /* sampled rough specular */
 #define RC_RAY_AMBIENT 4u     /* indirect diffuse sample */
+#define RC_RAY_AMBMISS 5u     /* not a ray: an irradiance-cache miss the host makes a record for
+                                 (org = point, dir = normal, coef.w = the hit ray's weight) */
 #define RC_RAY_KIND_MASK 7u
 /* Lineage bit: the ray descends from the primary hit's pure specular reflection, whose
  * contribution rtrace reports as "mirrored" (-o r, x, R, l). */
@@ -244,7 +246,9 @@ typedef struct rc_params {
   rc_u32 ad;                  /* -ad ambient divisions */
   rc_u32 as;                  /* -as ambient super-samples */
   rc_float4 amb;              /* irradiance cache: x = -aa, y = minimum radius (Radiance's
-                                 minarad), z = number of BVH nodes (0: no cache), w unused */
+                                 minarad), z = number of BVH nodes (0: no cache), w = 1 when a
+                                 miss is reported to the host (RC_RAY_AMBMISS) instead of
+                                 sampled */
 } rc_params;
 
 /* An irradiance-cache record as the lookup kernel reads it (ambient-file.md §3; Radiance's

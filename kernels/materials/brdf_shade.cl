@@ -20,9 +20,9 @@ static void rc_shade_brdf2(const rc_scene_args* S, rc_out* o, const rc_material*
   int dumb = rc_brdf_dumb(S, h);
   float3 known = (float3)(0.0f);
   if (b.trans < 1.0f - RC_FTINY)
-    known += rc_ambient(o, r, p, b.pnorm, b.mcolor * (1.0f - b.trans), dumb, P, key, 4096);
+    known += rc_ambient(S, o, r, p, b.pnorm, b.mcolor * (1.0f - b.trans), dumb, key, 4096);
   if (b.trans > RC_FTINY)
-    known += rc_ambient(o, r, p, -b.pnorm, b.mcolor * b.trans, dumb, P, key, 1u << 20);
+    known += rc_ambient(S, o, r, p, -b.pnorm, b.mcolor * b.trans, dumb, key, 1u << 20);
   rc_direct(S, o, 0, &b, r, p, b.pnorm, d, 0, r->coef.xyz, rc_bright(known), key);
 }
 
@@ -54,8 +54,8 @@ static void rc_shade_brtdfunc(const rc_scene_args* S, rc_out* o, const rc_materi
              r->ambient_depth);
   int dumb = rc_brdf_dumb(S, h);
   float3 known = (float3)(0.0f);
-  if (hasrefl) known += rc_ambient(o, r, p, b.pnorm, b.rdiff, dumb, P, key, 4096);
-  if (hastrans) known += rc_ambient(o, r, p, -b.pnorm, b.tdiff, dumb, P, key, 1u << 20);
+  if (hasrefl) known += rc_ambient(S, o, r, p, b.pnorm, b.rdiff, dumb, key, 4096);
+  if (hastrans) known += rc_ambient(S, o, r, p, -b.pnorm, b.tdiff, dumb, key, 1u << 20);
   if (hasrefl || hastrans || (rc_brdf_desc(&b, 0u) & 1u))
     rc_direct(S, o, 0, &b, r, p, b.pnorm, d, 0, r->coef.xyz, rc_bright(known), key);
 }

@@ -276,15 +276,23 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
     return P->av.xyz * acoef;
   }
 #ifdef RADCL_HAS_AMBCACHE
-  /* Records that cover the point answer it (Radiance's multambient); a miss is sampled as
-   * with -aa 0 (no new record is made yet). */
-  if (P->amb.z > 0.0f) {
+  /* Records that cover the point answer it (Radiance's multambient); a miss the host will not
+   * make a record for is sampled as with -aa 0. */
+  if (P->amb.z > 0.0f || P->amb.w > 0.0f) {
     float3 acol;
     float wsum = rc_amb_lookup(S, p, n, r->ambient_depth, r->coef.w, &acol);
     if (wsum > RC_FTINY) {
       float3 v = acol / wsum * acoef;
       o->immediate += v * r->coef.xyz;
       return v;
+    }
+    /* While the host builds the cache, a miss becomes a record request; the ray's value is
+     * then incomplete and the host shades it again once records cover the point. */
+    if (P->amb.w > 0.0f) {
+      if (!o->super)
+        rc_emit_ray(o, r, p, n, acoef, RC_RAY_AMBMISS, 0.0f, r->coef.w, r->depth,
+                    r->ambient_depth);
+      return (float3)(0.0f);
     }
   }
 #endif

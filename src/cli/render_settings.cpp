@@ -46,10 +46,25 @@ render::RenderSettings render_settings(const options::RenderOptions& r) {
   return s;
 }
 
-void attach_ambient_file(render::RenderSettings& s, const options::RenderOptions& r,
-                         const scene::LoadedScene& ls, const std::string& progname,
-                         const std::string& octree) {
-  if (r.ambient_file.empty() || r.ambient_accuracy <= 0 || r.ambient_bounces <= 0) return;
+std::unique_ptr<ambient::AmbientFile> setup_ambient(render::RenderSettings& s,
+                                                    const options::RenderOptions& r,
+                                                    const scene::LoadedScene& ls,
+                                                    const std::string& progname,
+                                                    const std::string& octree) {
+  if (r.ambient_accuracy <= 0 || r.ambient_bounces <= 0) return nullptr;
+  // Radiance's cube is the octree's; scenes given as files get their bounding box's
+  // largest side, as oconv starts from.
+  double cube = ls.main.cube_size;
+  if (!(cube > 0)) {
+    geometry::SceneGeometry g(ls);
+    auto b = g.bounds();
+    cube = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2]});
+  }
+  s.cube_size = cube;
+  s.ambient_min_radius = render::ambient_min_radius(cube, r.ambient_resolution);
+  s.ambient_max_radius = render::ambient_max_radius(cube, r.ambient_resolution);
+  s.make_records = true;
+  if (r.ambient_file.empty()) return nullptr;
   ambient::AmbientSettings as;
   as.progname = progname;
   as.av = r.ambient_value;
@@ -62,18 +77,15 @@ void attach_ambient_file(render::RenderSettings& s, const options::RenderOptions
   if (!octree.empty()) as.octree = octree;
   as.software = std::string("radcl ") + RADCL_VERSION;
   as.time = std::time(nullptr);
-  ambient::AmbientFile file;
-  s.ambient_records = file.open(r.ambient_file, ambient::new_file_header(as));
-  file.close();
-  // Radiance's cube is the octree's; scenes given as files get their bounding box's
-  // largest side, as oconv starts from.
-  double cube = ls.main.cube_size;
-  if (!(cube > 0)) {
-    geometry::SceneGeometry g(ls);
-    auto b = g.bounds();
-    cube = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2]});
-  }
-  s.ambient_min_radius = render::ambient_min_radius(cube, r.ambient_resolution);
+  auto file = std::make_unique<ambient::AmbientFile>();
+  s.ambient_records = file->open(r.ambient_file, ambient::new_file_header(as));
+  return file;
+}
+
+void sync_ambient(ambient::AmbientFile* file, render::Renderer& renderer) {
+  std::vector<ambient::AmbientRecord> made = renderer.take_new_records();
+  if (!file || !file->is_open()) return;
+  renderer.add_records(file->append(made));
 }
 
 } // namespace radcl::cli

@@ -136,8 +136,8 @@ public:
 
   void prepare() {
     settings_ = settings_from(opt_.render);
-    cli::attach_ambient_file(settings_, opt_.render, ls_, args_.empty() ? "rpict" : args_[0],
-                             cmd_.operand < args_.size() ? args_[cmd_.operand] : "");
+    amb_ = cli::setup_ambient(settings_, opt_.render, ls_, args_.empty() ? "rpict" : args_[0],
+                              cmd_.operand < args_.size() ? args_[cmd_.operand] : "");
     renderer_ = std::make_unique<render::Renderer>(ls_, settings_, device::default_context());
   }
 
@@ -218,6 +218,7 @@ private:
   const scene::LoadedScene& ls_;
   render::RenderSettings settings_;
   std::unique_ptr<render::Renderer> renderer_;
+  std::unique_ptr<ambient::AmbientFile> amb_; // -af with the cache in use
   options::View view_, last_;
   bool have_last_ = false;
   std::unique_ptr<cli::FdInputBuf> lines_;
@@ -314,6 +315,7 @@ private:
     if (xres > 0 && yres > 0)
       render::render_picture(*renderer_, view_, ps, [&](const render::PictureRows& rows) {
         out.rows(rows, zout.get());
+        cli::sync_ambient(amb_.get(), *renderer_);
         if (keep_depth) depth.insert(depth.end(), rows.depth.begin(), rows.depth.end());
         progress.update(static_cast<double>(rows.first + rows.count) / yres,
                         renderer_->stats().total());
@@ -359,9 +361,6 @@ int rpict_main(int argc, char** argv) {
   // changes nothing there either.
   if (opt.render.ambient_value_weight > 0 && opt.render.ambient_accuracy > 0)
     warning("-aw needs the irradiance cache's values: the ambient value is used as given");
-  if (opt.render.ambient_accuracy > 0 && opt.render.ambient_bounces > 0)
-    warning("the irradiance cache makes no records yet: ambient values that no -af record "
-            "covers are computed as with -aa 0");
   if (persist && !server && !cli::create_persist_file(opt.persist_file))
     return cli::attach_persist(opt.persist_file, args[0]); // another one was quicker
 

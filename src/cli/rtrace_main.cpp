@@ -92,8 +92,8 @@ public:
       caster_ = std::make_unique<Caster>(ls);
     else {
       render::RenderSettings st = settings_from(opt_);
-      cli::attach_ambient_file(st, opt_.render, ls, cmd.args.empty() ? "rtrace" : cmd.args[0],
-                               cmd.operand < cmd.args.size() ? cmd.args[cmd.operand] : "");
+      amb_ = cli::setup_ambient(st, opt_.render, ls, cmd.args.empty() ? "rtrace" : cmd.args[0],
+                                cmd.operand < cmd.args.size() ? cmd.args[cmd.operand] : "");
       renderer_ = std::make_unique<render::Renderer>(ls, st, *ctx);
     }
   }
@@ -143,6 +143,7 @@ private:
   const options::RtraceOptions& opt_;
   options::OutputSpec spec_;
   std::unique_ptr<render::Renderer> renderer_;
+  std::unique_ptr<ambient::AmbientFile> amb_; // -af with the cache in use
   std::unique_ptr<Caster> caster_;
   options::RayFlow flow_;
   std::string out_;
@@ -155,9 +156,10 @@ private:
       if (p.length > 0) rays.push_back({p.org, p.dir, opt_.limit_distance ? p.length : 0.0});
     std::vector<render::PrimaryResult> res(rays.size());
     if (!rays.empty()) {
-      if (renderer_)
+      if (renderer_) {
         renderer_->render(rays, res);
-      else
+        cli::sync_ambient(amb_.get(), *renderer_);
+      } else
         caster_->cast(rays, res);
     }
     std::size_t k = 0;
@@ -347,9 +349,6 @@ int rtrace_main(int argc, char** argv) {
   // changes nothing there either.
   if (cmd.opt.render.ambient_value_weight > 0 && cmd.opt.render.ambient_accuracy > 0)
     warning("-aw needs the irradiance cache's values: the ambient value is used as given");
-  if (cmd.opt.render.ambient_accuracy > 0 && cmd.opt.render.ambient_bounces > 0)
-    warning("the irradiance cache makes no records yet: ambient values that no -af record "
-            "covers are computed as with -aa 0");
   const bool persist = cmd.opt.persist != options::RtraceOptions::Persist::None;
   if (persist && !server && !cli::create_persist_file(cmd.opt.persist_file))
     return cli::attach_persist(cmd.opt.persist_file, args[0]); // another one was quicker

@@ -84,7 +84,14 @@ private:
 } // namespace
 
 double ambient_min_radius(double cube_size, int ar) {
-  return ar > 0 ? cube_size / ar : 0.0;
+  const double r = ar > 0 ? cube_size / ar : 0.0;
+  return r <= 1e-6 ? 1e-5 : r;
+}
+
+double ambient_max_radius(double cube_size, int ar) {
+  double r = ar > 0 ? std::min(64 * cube_size / ar, 0.2 * cube_size) : 0.2 * cube_size;
+  const double lo = ambient_min_radius(cube_size, ar);
+  return r <= lo ? 64 * lo : r;
 }
 
 AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> records,

@@ -2,16 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <map>
+#include <set>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
+#include "radcl/ambient/dircode.h"
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
 #include "radcl/device/program.h"
 #include "radcl/render/ambient_cache.h"
+#include "radcl/render/ambient_record.h"
 #include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
+#include "radcl/rng.h"
 #include "radcl/util/error.h"
 
 namespace radcl::render {
@@ -43,9 +50,26 @@ template <class T> device::Buffer upload(device::Context& ctx, const std::vector
   return v.empty() ? device::Buffer(ctx, sizeof(T)) : device::Buffer::from(ctx, v);
 }
 
+// Shirley and Chiu's concentric map of the unit square onto the unit disc (as the kernels'
+// rc_square_to_disk), for the hemispheres of new records.
+std::array<double, 2> square_to_disk(double sx, double sy) {
+  const double a = 2 * sx - 1, b = 2 * sy - 1;
+  if (a == 0 && b == 0) return {0, 0};
+  const double q = 3.14159265358979323846 / 4;
+  double r, phi;
+  if (a * a > b * b) {
+    r = a;
+    phi = q * (b / a);
+  } else {
+    r = b;
+    phi = 2 * q - q * (a / b);
+  }
+  return {r * std::cos(phi), r * std::sin(phi)};
+}
+
 // Whether lookups in an irradiance cache run: records to look up, -aa > 0 and a bounce.
 bool uses_cache(const RenderSettings& st) {
-  return st.ab > 0 && st.aa > 0 && !st.ambient_records.empty();
+  return st.ab > 0 && st.aa > 0 && (st.make_records || !st.ambient_records.empty());
 }
 
 device::ProgramSource shade_program(const CompiledScene& cs, const RenderSettings& st) {
@@ -143,11 +167,13 @@ struct Renderer::Impl {
     bool super = st.as > 0 && st.ab > 0 && st.ad > 0;
     tree = super || st.trace != RenderSettings::Trace::Off;
     p.as = super ? static_cast<std::uint32_t>(st.as) : 0u;
-    AmbientCacheBuffers cache;
-    if (uses_cache(st)) cache = build_ambient_cache(st.ambient_records, geom.centre(), st.aa);
-    p.amb = f4(st.aa, st.ambient_min_radius, static_cast<double>(cache.nodes.size()), 0);
-    amb_records = upload(c, cache.records);
-    amb_nodes = upload(c, cache.nodes);
+    ray_eps = p.spec.z;
+    cache_records = st.ambient_records;
+    building = uses_cache(st) && st.make_records && st.trace == RenderSettings::Trace::Off;
+    p.amb = f4(st.aa, st.ambient_min_radius, 0, 0);
+    base = p;
+    upload_cache();
+    p = base;
     params.write(&p, sizeof p);
     upload_sources();
     add_virtual_sources(
@@ -161,7 +187,328 @@ struct Renderer::Impl {
     upload_sources();
     p.nsources = static_cast<std::uint32_t>(cs.sources.sources.size());
     params.write(&p, sizeof p);
+    base = p;
     stats = RenderStats{}; // the pretest's rays are not the caller's
+  }
+
+  // ---- The irradiance cache (docs/ambient.md) ----
+  // How a primary starts when it is a hemisphere sample of a record being made.
+  struct RayStart {
+    std::uint32_t flags = RC_RAY_PRIMARY, depth = 0, ambient_depth = 0;
+    float weight = 1;
+  };
+  rc_params base{};                 // the uploaded parameters, amb.w aside
+  double ray_eps = 0;               // where secondary rays start
+  bool building = false;            // misses become records
+  bool collecting = false;          // this pass reports misses (amb.w = 1)
+  int nesting = 0;                  // > 0 while a record's samples are rendered
+  std::span<const RayStart> starts; // per primary of the current run(); empty: the caller's
+  std::vector<rc_ray> misses;       // record requests of the current pass
+  std::vector<ambient::AmbientRecord> cache_records; // all, world coordinates
+  std::vector<ambient::AmbientRecord> made;          // made since take_new_records()
+  std::uint32_t next_sample_id = 0x40000000u;
+  std::unique_ptr<RecordMaker> maker; // the record kernel, built when first needed
+
+  void upload_cache() {
+    AmbientCacheBuffers cache;
+    if (uses_cache(settings))
+      cache = build_ambient_cache(cache_records, geom.centre(), settings.aa);
+    base.amb.z = static_cast<float>(cache.nodes.size());
+    amb_records = upload(ctx, cache.records);
+    amb_nodes = upload(ctx, cache.nodes);
+    rc_params p = base;
+    p.amb.w = collecting ? 1.0f : 0.0f;
+    params.write(&p, sizeof p);
+  }
+
+  void set_collect(bool on) {
+    collecting = on;
+    rc_params p = base;
+    p.amb.w = on ? 1.0f : 0.0f;
+    params.write(&p, sizeof p);
+  }
+
+  // Renders `rays` while the cache grows: a pass reports the misses of its primaries, records
+  // are made for a well-spread choice of them, and the primaries that missed are shaded again;
+  // after kRounds passes what still misses is sampled as with -aa 0. A primary's value is the
+  // one of its first pass without a miss, so it is computed as Radiance computes it once the
+  // records it needs exist.
+  static constexpr int kRounds = 12;
+  void build_render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results,
+                    std::span<const RayStart> st) {
+    std::vector<std::uint32_t> todo(rays.size());
+    for (std::size_t i = 0; i < todo.size(); ++i)
+      todo[i] = static_cast<std::uint32_t>(i);
+    for (int round = 0; !todo.empty(); ++round) {
+      const bool last = round >= kRounds;
+      std::vector<PrimaryRay> sub;
+      std::vector<RayStart> sub_start;
+      std::unordered_map<std::uint32_t, std::uint32_t> at;
+      for (std::uint32_t i : todo) {
+        PrimaryRay r = rays[i];
+        if (r.id == RC_NONE) r.id = i; // the same random numbers in every pass
+        at[r.id] = static_cast<std::uint32_t>(sub.size());
+        sub.push_back(r);
+        if (!st.empty()) sub_start.push_back(st[i]);
+      }
+      std::vector<PrimaryResult> res(sub.size());
+      const bool saved_tree = tree;
+      const std::span<const RayStart> saved_starts = starts;
+      if (!last) tree = false; // nothing is super-sampled while misses are only reported
+      starts = sub_start;
+      set_collect(!last);
+      misses.clear();
+      run(sub, res);
+      set_collect(false);
+      starts = saved_starts;
+      tree = saved_tree;
+      std::vector<rc_ray> miss = std::move(misses);
+      misses.clear();
+      std::vector<char> missed(sub.size(), 0);
+      for (const rc_ray& m : miss)
+        missed[at.at(m.primary)] = 1;
+      std::vector<std::uint32_t> again;
+      for (std::size_t k = 0; k < sub.size(); ++k)
+        if (missed[k])
+          again.push_back(todo[k]);
+        else
+          results[todo[k]] = std::move(res[k]);
+      if (std::getenv("RADCL_DEBUG_CACHE"))
+        std::fprintf(stderr, "cache: nesting %d round %d: %zu primaries, %zu missed, %zu misses\n",
+                     nesting, round, sub.size(), again.size(), miss.size());
+      if (!miss.empty()) make_records(miss, round);
+      todo = std::move(again);
+    }
+  }
+
+  // Makes records for a well-spread subset of `miss`: in order, a miss is chosen unless a
+  // chosen one of its level, facing within 60 degrees, lies within aa x maxarad / 2^round (not
+  // below aa x minarad) of it. Round 0 spaces records by the largest region a record can
+  // cover; each later round sees only the points earlier records left uncovered and halves the
+  // spacing, so records go where Radiance's sequential order would put them (a miss no record
+  // covers) and the cache keeps its -aa/-ar adaptivity.
+  void make_records(const std::vector<rc_ray>& miss, int round) {
+    const double aa = settings.aa;
+    const double floor_sep = aa * std::max(settings.ambient_min_radius, 1e-6 * settings.cube_size);
+    const double sep =
+        std::max(floor_sep, aa * settings.ambient_max_radius / std::ldexp(1.0, round));
+    // Chosen points by grid cell of side `sep`: a neighbour within sep is in one of 27 cells.
+    std::map<std::array<std::int64_t, 4>, std::vector<const rc_ray*>> grid;
+    std::vector<const rc_ray*> chosen;
+    auto cell = [&](const rc_ray& m, int dx, int dy, int dz) {
+      return std::array<std::int64_t, 4>{static_cast<std::int64_t>(m.ambient_depth),
+                                         static_cast<std::int64_t>(std::floor(m.org.x / sep)) + dx,
+                                         static_cast<std::int64_t>(std::floor(m.org.y / sep)) + dy,
+                                         static_cast<std::int64_t>(std::floor(m.org.z / sep)) + dz};
+    };
+    for (const rc_ray& m : miss) {
+      bool near = false;
+      for (int dx = -1; dx <= 1 && !near; ++dx)
+        for (int dy = -1; dy <= 1 && !near; ++dy)
+          for (int dz = -1; dz <= 1 && !near; ++dz) {
+            auto it = grid.find(cell(m, dx, dy, dz));
+            if (it == grid.end()) continue;
+            for (const rc_ray* c : it->second) {
+              const double ex = m.org.x - c->org.x, ey = m.org.y - c->org.y,
+                           ez = m.org.z - c->org.z;
+              const double facing = m.dir.x * c->dir.x + m.dir.y * c->dir.y + m.dir.z * c->dir.z;
+              if (facing > 0.5 && ex * ex + ey * ey + ez * ez < sep * sep) {
+                near = true;
+                break;
+              }
+            }
+          }
+      if (near) continue;
+      grid[cell(m, 0, 0, 0)].push_back(&m);
+      chosen.push_back(&m);
+    }
+    sample_hemispheres(chosen);
+  }
+
+  // Radiance's samp_hemi for each chosen miss (ns x ns stratified cosine-weighted directions,
+  // ns = sqrt(-ad x record weight), at least 7), the samples rendered as primaries one
+  // ambient level deeper (their own misses make records first), then the record kernel
+  // (render/ambient_record.h) turns each complete hemisphere into a record.
+  // -as for a record (Radiance's ambsupersamp): where the squared brightness differences of a
+  // division's neighbours say the hemisphere varies most, more samples of that division are
+  // rendered, as many as its share of the budget -as x weight (when that exceeds 8 and every
+  // sample of more than 7 x 7 divisions succeeded); a division's value becomes the mean of its
+  // samples and its distance the nearest (its point stays the first sample's).
+  void supersample_hemispheres(const std::vector<rc_amb_hemi>& hemis,
+                               const std::vector<PrimaryRay>& rays,
+                               const std::vector<RayStart>& start,
+                               std::vector<PrimaryResult>& res) {
+    if (settings.as <= 0) return;
+    auto bright = [](const Vec3d& c) { return 0.2651 * c[0] + 0.6701 * c[1] + 0.0648 * c[2]; };
+    std::vector<PrimaryRay> extra;
+    std::vector<RayStart> extra_start;
+    std::vector<std::size_t> division; // the sample slot each extra one refines
+    for (const rc_amb_hemi& h : hemis) {
+      const std::size_t ns = h.ns, n2 = ns * ns;
+      if (n2 <= 49) continue;
+      bool ok = true;
+      for (std::size_t k = 0; k < n2 && ok; ++k)
+        ok = res[h.first + k].hit ? res[h.first + k].t > 1e-6 : true;
+      int cnt = static_cast<int>(settings.as * h.pos.w + 0.5);
+      if (!ok || cnt <= 8) continue;
+      std::vector<double> b(n2), e(n2, 0.0);
+      for (std::size_t k = 0; k < n2; ++k)
+        b[k] = bright(res[h.first + k].value);
+      auto diff = [&](std::size_t a, std::size_t c) {
+        const double s = b[a] + b[c];
+        if (s <= 0) return;
+        const double d = (b[a] - b[c]) * (b[a] - b[c]) / s;
+        e[a] += d;
+        e[c] += d;
+      };
+      for (std::size_t i = 0; i < ns; ++i)
+        for (std::size_t j = 0; j < ns; ++j) {
+          const std::size_t k = i * ns + j;
+          if (i) diff(k, k - ns);
+          if (j) diff(k, k - 1);
+          if (i && j) diff(k, k - ns - 1);
+        }
+      // Corners and edges have fewer neighbours.
+      for (std::size_t k : {std::size_t{0}, ns - 1, (ns - 1) * ns, n2 - 1})
+        e[k] *= 8.0 / 3.0;
+      for (std::size_t i = 1; i + 1 < ns; ++i) {
+        e[i * ns] *= 8.0 / 5.0;
+        e[i * ns + ns - 1] *= 8.0 / 5.0;
+        e[i] *= 8.0 / 5.0;
+        e[(ns - 1) * ns + i] *= 8.0 / 5.0;
+      }
+      double rem = 0;
+      for (double v : e)
+        rem += v;
+      const PrimaryRay& first = rays[h.first];
+      rc_rng_key key = rc_make_key(first.id, 0x73757072u, 0, settings.seed);
+      std::uint32_t dim = 0;
+      for (std::size_t k = 0; k < n2 && cnt > 0 && rem > 1e-9; ++k) {
+        const int nss = static_cast<int>(e[k] / rem * cnt + rc_random(key, dim++));
+        const std::size_t i = k / ns, j = k % ns;
+        const Vec3d n = {h.nrm.x, h.nrm.y, h.nrm.z}, ux = {h.ux.x, h.ux.y, h.ux.z},
+                    uy = {h.uy.x, h.uy.y, h.uy.z};
+        for (int m = 1; m <= nss && cnt > 0; ++m, --cnt) {
+          const auto d =
+              square_to_disk((j + rc_random(key, dim + 1)) / ns, (i + rc_random(key, dim)) / ns);
+          dim += 2;
+          const double z = std::sqrt(std::max(0.0, 1 - d[0] * d[0] - d[1] * d[1]));
+          Vec3d dir;
+          for (int c = 0; c < 3; ++c)
+            dir[c] = d[0] * ux[c] + d[1] * uy[c] + z * n[c];
+          extra.push_back({first.org, unit(dir), 0, next_sample_id++});
+          extra_start.push_back(start[h.first]);
+          division.push_back(h.first + k);
+        }
+        rem -= e[k];
+      }
+    }
+    if (extra.empty()) return;
+    std::vector<PrimaryResult> more(extra.size());
+    ++nesting;
+    build_render(extra, more, extra_start);
+    --nesting;
+    // Each division's value: the mean of its samples; its hit: the nearest.
+    std::vector<int> count(res.size(), 1);
+    for (std::size_t x = 0; x < extra.size(); ++x) {
+      PrimaryResult& r = res[division[x]];
+      const int c = ++count[division[x]];
+      for (int k = 0; k < 3; ++k)
+        r.value[k] += (more[x].value[k] - r.value[k]) / c;
+      if (more[x].hit && (!r.hit || more[x].t < r.t)) {
+        r.hit = true;
+        r.t = more[x].t;
+      }
+    }
+  }
+
+  void sample_hemispheres(const std::vector<const rc_ray*>& chosen) {
+    std::vector<rc_amb_hemi> hemis;
+    std::vector<PrimaryRay> rays;
+    std::vector<RayStart> start;
+    const HemisphereSettings hs{settings.ambient_min_radius, settings.ambient_max_radius,
+                                settings.aa};
+    for (const rc_ray* m : chosen) {
+      const double wt = ambient_record_weight(static_cast<int>(m->ambient_depth), m->coef.w);
+      const float sw = static_cast<float>(kAvgRefl * m->coef.w);
+      if (sw < settings.lw) continue; // Radiance's rayorigin refuses every sample
+      if (settings.lr > 0 && static_cast<int>(m->depth) + 1 > settings.lr) continue;
+      const int ns = std::max(7, static_cast<int>(std::sqrt(settings.ad * wt) + 0.5));
+      const Vec3d n = {m->dir.x, m->dir.y, m->dir.z};
+      // A tangent axis: n crossed with the world axis it is least along.
+      int a = 0;
+      for (int k = 1; k < 3; ++k)
+        if (std::fabs(n[k]) < std::fabs(n[a])) a = k;
+      Vec3d e{0, 0, 0};
+      e[a] = 1;
+      const Vec3d ux =
+          unit({n[1] * e[2] - n[2] * e[1], n[2] * e[0] - n[0] * e[2], n[0] * e[1] - n[1] * e[0]});
+      const Vec3d uy = {n[1] * ux[2] - n[2] * ux[1], n[2] * ux[0] - n[0] * ux[2],
+                        n[0] * ux[1] - n[1] * ux[0]};
+      hemis.push_back(make_hemisphere({m->org.x, m->org.y, m->org.z}, n, ux,
+                                      static_cast<unsigned>(ns), static_cast<unsigned>(rays.size()),
+                                      static_cast<int>(m->ambient_depth), wt, hs));
+      const std::uint32_t rec = next_sample_id++;
+      rc_rng_key key = rc_make_key(rec, 0x616d62u, 0, settings.seed);
+      const Vec3d o = {m->org.x + centre[0], m->org.y + centre[1], m->org.z + centre[2]};
+      for (int i = 0; i < ns; ++i)
+        for (int j = 0; j < ns; ++j) {
+          const std::uint32_t dim = 2u * static_cast<std::uint32_t>(i * ns + j);
+          const auto d =
+              square_to_disk((j + rc_random(key, dim + 1)) / ns, (i + rc_random(key, dim)) / ns);
+          const double z = std::sqrt(std::max(0.0, 1 - d[0] * d[0] - d[1] * d[1]));
+          Vec3d dir;
+          for (int k = 0; k < 3; ++k)
+            dir[k] = d[0] * ux[k] + d[1] * uy[k] + z * n[k];
+          rays.push_back({o, unit(dir), 0, next_sample_id++});
+          RayStart s;
+          s.flags =
+              RC_RAY_AMBIENT | (m->flags & ~(RC_RAY_KIND_MASK | RC_RAY_MIRRORED | RC_RAY_THROUGH));
+          s.depth = m->depth + 1;
+          s.ambient_depth = m->ambient_depth + 1;
+          s.weight = sw;
+          start.push_back(s);
+        }
+    }
+    if (hemis.empty()) return;
+    std::vector<PrimaryResult> res(rays.size());
+    ++nesting;
+    build_render(rays, res, start);
+    --nesting;
+    supersample_hemispheres(hemis, rays, start, res);
+    // The strata as the record kernel reads them: value over ns^2, reciprocal distance (0:
+    // nothing hit, < 0: a failed sample) and the point met, clamped as Radiance clamps it.
+    const double far = 10 * settings.cube_size + 1000;
+    std::vector<rc_amb_sample> samples(rays.size());
+    for (const rc_amb_hemi& h : hemis)
+      for (std::uint32_t k = 0; k < h.ns * h.ns; ++k) {
+        const std::size_t i = h.first + k;
+        const PrimaryResult& r = res[i];
+        const double t = r.hit ? r.t : 1e10;
+        const double c = 1.0 / (static_cast<double>(h.ns) * h.ns);
+        samples[i].val = f4(r.value[0] * c, r.value[1] * c, r.value[2] * c,
+                            t <= 1e-6 ? -1.0
+                            : r.hit   ? 1 / t
+                                      : 0.0);
+        const double reach = std::min(t, far);
+        samples[i].pnt = f4(h.pos.x + reach * rays[i].dir[0], h.pos.y + reach * rays[i].dir[1],
+                            h.pos.z + reach * rays[i].dir[2], 0);
+      }
+    if (!maker) maker = std::make_unique<RecordMaker>(ctx);
+    MadeRecords out = maker->make(hemis, samples);
+    std::size_t added = 0;
+    for (std::size_t k = 0; k < out.records.size(); ++k) {
+      if (out.made[k].status != RC_AMB_RECORD) continue;
+      ambient::AmbientRecord a = to_ambient_record(out.records[k], out.made[k].corral, centre);
+      cache_records.push_back(a);
+      made.push_back(a);
+      ++added;
+    }
+    stats.records += added;
+    if (std::getenv("RADCL_DEBUG_CACHE"))
+      std::fprintf(stderr, "cache: nesting %d: %zu hemispheres, %zu records\n", nesting,
+                   hemis.size(), added);
+    if (added) upload_cache();
   }
 
   void upload_sources() {
@@ -248,6 +595,14 @@ struct Renderer::Impl {
 
   void render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
     if (results.size() != rays.size()) throw FatalError("renderer: result span size mismatch");
+    if (building) {
+      build_render(rays, results, {});
+      return;
+    }
+    run(rays, results);
+  }
+
+  void run(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
     std::size_t wave = std::max<std::size_t>(1, settings.wave_size);
     for (std::size_t first = 0; first < rays.size(); first += wave) {
       std::size_t n = std::min(wave, rays.size() - first);
@@ -296,8 +651,16 @@ struct Renderer::Impl {
       r.primary = prim[i].id != RC_NONE ? prim[i].id : static_cast<std::uint32_t>(first_index + i);
       r.flags = RC_RAY_PRIMARY;
       r.tally = static_cast<std::uint32_t>(i);
+      if (!starts.empty()) { // a hemisphere sample of a record being made
+        const RayStart& st = starts[first_index + i];
+        r.flags = st.flags;
+        r.depth = st.depth;
+        r.ambient_depth = st.ambient_depth;
+        r.coef.w = st.weight;
+        r.org.w = static_cast<float>(ray_eps);
+      }
     }
-    if (settings.irradiance_I) {
+    if (settings.irradiance_I && nesting == 0) {
       // The measurement point is a diffuse meter facing the given direction (1e-4 along it,
       // where Radiance's reversed primary ray meets it).
       hits.resize(prim.size());
@@ -319,7 +682,8 @@ struct Renderer::Impl {
     bool first_wave = true;
     while (!queue.empty()) {
       std::size_t n = queue.size();
-      if (!(first_wave && settings.irradiance_I)) trace(queue, hits, res, first_wave);
+      if (!(first_wave && settings.irradiance_I && nesting == 0))
+        trace(queue, hits, res, first_wave);
       first_wave = false;
 
       // Shade in slices whose slots fit a modest allocation (a slice keeps queue order, so
@@ -337,6 +701,13 @@ struct Renderer::Impl {
       if (tree)
         for (auto req = tally.take_requests(); !req.empty(); req = tally.take_requests())
           supersample(req, next);
+      if (collecting) { // record requests are not rays
+        auto miss = std::stable_partition(next.begin(), next.end(), [](const rc_ray& r) {
+          return (r.flags & RC_RAY_KIND_MASK) != RC_RAY_AMBMISS;
+        });
+        misses.insert(misses.end(), miss, next.end());
+        next.erase(miss, next.end());
+      }
       queue = std::move(next);
     }
     for (std::size_t i = 0; i < prim.size(); ++i) {
@@ -766,6 +1137,14 @@ Renderer::Renderer(const scene::LoadedScene& scene, const RenderSettings& settin
 Renderer::~Renderer() = default;
 void Renderer::render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
   impl_->render(rays, results);
+}
+std::vector<ambient::AmbientRecord> Renderer::take_new_records() {
+  return std::exchange(impl_->made, {});
+}
+void Renderer::add_records(std::span<const ambient::AmbientRecord> records) {
+  if (records.empty()) return;
+  impl_->cache_records.insert(impl_->cache_records.end(), records.begin(), records.end());
+  impl_->upload_cache();
 }
 const CompiledScene& Renderer::compiled() const {
   return impl_->cs;

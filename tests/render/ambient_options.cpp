@@ -43,7 +43,7 @@ std::vector<render::PrimaryResult> sphere(render::RenderSettings st, bool meters
 }
 
 render::RenderSettings amb_settings(int ab, double av, List list = List::None,
-                               std::vector<std::string> names = {}) {
+                                    std::vector<std::string> names = {}) {
   render::RenderSettings st;
   st.ab = ab;
   st.ad = 64;
@@ -90,10 +90,10 @@ TEST(AmbientOptions, ExcludedModifierGetsAmbientValue) {
 
 // An include list is the opposite: only the listed modifiers are sampled.
 TEST(AmbientOptions, IncludeList) {
-  expect_same(sphere(amb_settings(2, 0.5, List::Include, {"sphere_wall"})), sphere(amb_settings(2, 0.5)),
-              "-ai sphere_wall");
-  expect_same(sphere(amb_settings(2, 0.5, List::Include, {"emitter"})), sphere(amb_settings(0, 0.5)),
-              "-ai emitter");
+  expect_same(sphere(amb_settings(2, 0.5, List::Include, {"sphere_wall"})),
+              sphere(amb_settings(2, 0.5)), "-ai sphere_wall");
+  expect_same(sphere(amb_settings(2, 0.5, List::Include, {"emitter"})),
+              sphere(amb_settings(0, 0.5)), "-ai emitter");
   // Radiance's list tests the object hit; an -I meter hits none, so it is always sampled.
   expect_same(sphere(amb_settings(1, 0.5, List::Exclude, {"sphere_wall"}), true),
               sphere(amb_settings(1, 0.5), true), "-I with -ae sphere_wall");

@@ -22,8 +22,9 @@ struct AmbientCacheBuffers {
 AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> records,
                                         const std::array<double, 3>& centre, double aa);
 
-// Radiance's setambres(): the smallest record radius, the octree cube's size over -ar (0 when
-// -ar is 0).
+// Radiance's setambres(): the smallest record radius, the octree cube's size over -ar (1e-5
+// when -ar is 0), and the largest, 64 times that but at most a fifth of the cube.
 double ambient_min_radius(double cube_size, int ar);
+double ambient_max_radius(double cube_size, int ar);
 
 } // namespace radcl::render

@@ -33,11 +33,15 @@ struct RenderSettings {
   int ab = 0;
   int ad = 1024; // -aa 0 hemisphere divisions
   int as = 128;  // -as super-samples spread over a hemisphere's high-variance divisions
-  // The irradiance cache: with -aa > 0 these records (from -af) answer the ambient lookups
-  // they cover, by Radiance's tests and weights; points no record covers are sampled as with
-  // -aa 0 (new records are not made yet).
+  // The irradiance cache (-aa > 0 with -ab > 0): these records (from -af) answer the ambient
+  // lookups they cover, by Radiance's tests and weights. With make_records, points no record
+  // covers get new records (Renderer::take_new_records), made from hemisphere samples as
+  // Radiance makes them; without, they are sampled as with -aa 0.
   double aa = 0;
   double ambient_min_radius = 0; // Radiance's minarad: the octree cube's size / -ar
+  double ambient_max_radius = 0; // Radiance's maxarad: 64 minarad, at most half the cube
+  double cube_size = 0;          // the octree cube (sample points are clamped at 10 cubes)
+  bool make_records = false;
   std::vector<ambient::AmbientRecord> ambient_records;
   // -ae/-ai/-aE/-aI: hits on surfaces whose modifier is excluded (or, with an include list, not
   // included) take -av instead of sampling.
@@ -101,6 +105,7 @@ struct RenderStats {
   std::uint64_t primary = 0;   // first-wave rays (not counted for -I meters)
   std::uint64_t secondary = 0; // reflected, transmitted, specular and ambient rays
   std::uint64_t shadow = 0;    // shadow-ray segments (one per surface passed)
+  std::uint64_t records = 0;   // irradiance-cache records made
   std::uint64_t total() const { return primary + secondary + shadow; }
 };
 
@@ -111,6 +116,12 @@ public:
 
   // Traces the primaries and their ray trees; results[i] belongs to rays[i].
   void render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results);
+
+  // Irradiance-cache records made since the last call (RenderSettings::make_records), in world
+  // coordinates, for the -af file.
+  std::vector<ambient::AmbientRecord> take_new_records();
+  // Adds records other processes wrote to the shared -af file.
+  void add_records(std::span<const ambient::AmbientRecord> records);
 
   const CompiledScene& compiled() const;
   const RenderStats& stats() const;
