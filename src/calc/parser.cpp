@@ -308,7 +308,15 @@ private:
       if (!(next() != kEof && std::isdigit(next()))) syntax("unexpected character");
       Node n;
       n.op = Op::Chan;
-      n.index = static_cast<int>(number());
+      // An integer of digits only, as Radiance's getinum reads it.
+      long chan = 0;
+      while (next() != kEof && std::isdigit(next())) {
+        chan = chan * 10 + (next() - '0');
+        if (chan > 1000000) syntax("channel number too large");
+        step();
+      }
+      skip();
+      n.index = static_cast<int>(chan);
       return n;
     }
     if (next() != kEof && (std::isalpha(next()) || next() == kContextMark)) {
