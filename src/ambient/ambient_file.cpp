@@ -81,17 +81,16 @@ std::vector<AmbientRecord> AmbientFile::open(const std::string& path,
   close();
   path_ = path;
   read_only_ = false;
-  // Radiance's order: read/write, else read-only, else create.
+  // Radiance's order: read/write, else read-only, else create. A file that does not exist is
+  // created at once (no O_TRUNC or O_EXCL: if another process creates it first, we find its
+  // header below): trying read-only first could meet a file another process has just created
+  // and leave this one unable to write (Radiance has that race).
   bool writable = true;
   fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
+  if (fd_ < 0 && errno == ENOENT) fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
   if (fd_ < 0) {
     fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     writable = false;
-  }
-  if (fd_ < 0) {
-    // No O_TRUNC or O_EXCL: if another process creates it first, we find its header below.
-    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
-    writable = true;
   }
   if (fd_ < 0) throw FatalError("cannot open ambient file \"" + path + "\"");
   try {

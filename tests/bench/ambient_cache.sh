@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The irradiance cache's cost and accuracy: radcl's rtrace building its cache from nothing on
+# the reference runs, against Radiance 5.4a's stored times (radiance_times.tsv, one process)
+# and results (the _high runs for accuracy, the sphere's exact answers), and the time for
+# -ab 1..8 at fixed -ad on the integrating sphere (it should grow about linearly).
+#
+# usage: tests/bench/ambient_cache.sh [build-dir] [threads]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=$(cd "${1:-$root/build}" && pwd)
+threads=${2:-2}
+scenes=$root/tests/data/scenes
+ref=${RADCL_REFERENCE:-$root/../shared/reference}/results
+times=$ref/radiance_times.tsv
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+ref_time() { awk -F'\t' -v n="$1" '$1 == n { print $2 }' "$times"; }
+# Mean and worst relative luminance error of $1 against $2 (rgb per line).
+errs() {
+  paste "$1" "$2" | awk '{ a = .265*$1+.67*$2+.065*$3; b = .265*$4+.67*$5+.065*$6
+    e = (a - b) / b; if (e < 0) e = -e; s += e; if (e > m) m = e; n++ }
+    END { printf "%.2f%% %.2f%%", 100 * s / n, 100 * m }'
+}
+run() { # output-file args... ; prints seconds
+  local out=$1; shift
+  ( cd "$scenes" && /usr/bin/time -f "%e" "$build/bin/rtrace" -n "$threads" -u- -h -I "$@" \
+      > "$out" 2> "$work/err" ) || { cat "$work/err"; exit 1; }
+  tail -n 1 "$work/err"
+}
+
+# Warm the program cache so compile time is not measured.
+( cd "$scenes" && head -n 2 sphere_wall.pts | "$build/bin/rtrace" -h -I -ab 1 -aa 0.1 sphere.oct > /dev/null )
+
+printf '%-22s %9s %11s %8s   %-16s %s\n' case radcl_s radiance_s speedup "radcl err" "Radiance err (vs _high)"
+for name in office_clear_default luminaires_default; do
+  case $name in
+  office_clear_default) oct=office_clear.oct pts=office_grid.pts high=office_clear_high ;;
+  luminaires_default) oct=luminaires.oct pts=luminaires_grid.pts high=luminaires_high ;;
+  esac
+  secs=$(run "$work/$name.txt" -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 "$oct" < "$scenes/$pts")
+  rt=$(ref_time "$name")
+  e=$(errs "$work/$name.txt" "$ref/$high.txt")
+  er=$(errs "$ref/$name.txt" "$ref/$high.txt")
+  printf '%-22s %9s %11s %7.1fx   %-16s %s\n' "$name" "$secs" "$rt" \
+    "$(awk -v a="$rt" -v b="$secs" 'BEGIN { print a / b }')" "$e" "$er"
+done
+
+echo
+echo "integrating sphere, -ad 1024 -as 256 -aa 0.1 -ar 64 -lw 1e-5 (exact answers: sphere_exact.txt)"
+printf '%-6s %9s %11s %10s %10s %10s\n' "-ab" radcl_s radiance_s radcl radiance exact
+for ab in 1 2 4 8; do
+  secs=$(run "$work/s$ab.txt" -ab "$ab" -ad 1024 -as 256 -aa 0.1 -ar 64 -lw 1e-5 sphere.oct \
+    < "$scenes/sphere_wall.pts")
+  m=$(awk '{ s += $1; n++ } END { printf "%.4f", s / n }' "$work/s$ab.txt")
+  r=$(awk '{ s += $1; n++ } END { printf "%.4f", s / n }' "$ref/sphere_ab$ab.txt")
+  x=$(awk -v ab="$ab" '$1 == ab { printf "%.4f", $2 }' "$ref/sphere_exact.txt")
+  printf '%-6s %9s %11s %10s %10s %10s\n' "$ab" "$secs" "$(ref_time sphere_ab$ab)" "$m" "$r" "$x"
+done
