@@ -73,7 +73,9 @@ RC_NOISE_FN RC_NOISE_REAL rc_noise_cell(RC_NOISE_REAL x) {
 }
 
 RC_NOISE_FN int rc_noise_wrap(RC_NOISE_REAL c) {
-  return (int)(c - 256.0 * floor(c / 256.0)) & 0xff;
+  RC_NOISE_REAL m = c - 256.0 * floor(c / 256.0);
+  /* NaN or infinite coordinates (m is NaN then): cell 0 rather than an undefined conversion. */
+  return (m >= 0 && m < 256.0) ? (int)m & 0xff : 0;
 }
 
 RC_NOISE_BIG RC_NOISE_REAL rc_noise_perlin(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_NOISE_REAL z) {
