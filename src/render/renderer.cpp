@@ -336,8 +336,8 @@ struct Renderer::Impl {
   // samples and its distance the nearest (its point stays the first sample's).
   void supersample_hemispheres(const std::vector<rc_amb_hemi>& hemis,
                                const std::vector<PrimaryRay>& rays,
-                               const std::vector<RayStart>& start,
-                               std::vector<PrimaryResult>& res) {
+                               const std::vector<RayStart>& start, std::vector<PrimaryResult>& res,
+                               std::vector<double>& nearest) {
     if (settings.as <= 0) return;
     auto bright = [](const Vec3d& c) { return 0.2651 * c[0] + 0.6701 * c[1] + 0.0648 * c[2]; };
     std::vector<PrimaryRay> extra;
@@ -408,17 +408,15 @@ struct Renderer::Impl {
     ++nesting;
     build_render(extra, more, extra_start);
     --nesting;
-    // Each division's value: the mean of its samples; its hit: the nearest.
+    // Each division's value: the mean of its samples; its distance: the nearest (its point
+    // stays the first sample's).
     std::vector<int> count(res.size(), 1);
     for (std::size_t x = 0; x < extra.size(); ++x) {
       PrimaryResult& r = res[division[x]];
       const int c = ++count[division[x]];
       for (int k = 0; k < 3; ++k)
         r.value[k] += (more[x].value[k] - r.value[k]) / c;
-      if (more[x].hit && (!r.hit || more[x].t < r.t)) {
-        r.hit = true;
-        r.t = more[x].t;
-      }
+      if (more[x].hit) nearest[division[x]] = std::min(nearest[division[x]], more[x].t);
     }
   }
 
@@ -475,7 +473,10 @@ struct Renderer::Impl {
     ++nesting;
     build_render(rays, res, start);
     --nesting;
-    supersample_hemispheres(hemis, rays, start, res);
+    std::vector<double> nearest(res.size());
+    for (std::size_t i = 0; i < res.size(); ++i)
+      nearest[i] = res[i].hit ? res[i].t : 1e10;
+    supersample_hemispheres(hemis, rays, start, res, nearest);
     // The strata as the record kernel reads them: value over ns^2, reciprocal distance (0:
     // nothing hit, < 0: a failed sample) and the point met, clamped as Radiance clamps it.
     const double far = 10 * settings.cube_size + 1000;
@@ -484,12 +485,12 @@ struct Renderer::Impl {
       for (std::uint32_t k = 0; k < h.ns * h.ns; ++k) {
         const std::size_t i = h.first + k;
         const PrimaryResult& r = res[i];
-        const double t = r.hit ? r.t : 1e10;
+        const double t = r.hit ? r.t : 1e10, near = nearest[i];
         const double c = 1.0 / (static_cast<double>(h.ns) * h.ns);
         samples[i].val = f4(r.value[0] * c, r.value[1] * c, r.value[2] * c,
-                            t <= 1e-6 ? -1.0
-                            : r.hit   ? 1 / t
-                                      : 0.0);
+                            near <= 1e-6  ? -1.0
+                            : near < 1e10 ? 1 / near
+                                          : 0.0);
         const double reach = std::min(t, far);
         samples[i].pnt = f4(h.pos.x + reach * rays[i].dir[0], h.pos.y + reach * rays[i].dir[1],
                             h.pos.z + reach * rays[i].dir[2], 0);
