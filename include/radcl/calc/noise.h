@@ -120,7 +120,19 @@ RC_NOISE_FN RC_NOISE_REAL rc_noise_frand(rc_noise_i64 seed) {
 }
 
 RC_NOISE_FN RC_NOISE_REAL rc_noise_frand3(rc_noise_i64 x, rc_noise_i64 y, rc_noise_i64 z) {
-  return rc_noise_frand(17 * x + 23 * y + 29 * z);
+  /* Wrapping (unsigned) arithmetic: the same bits as Radiance's long arithmetic, defined. */
+  rc_noise_u64 h = (rc_noise_u64)17 * (rc_noise_u64)x + (rc_noise_u64)23 * (rc_noise_u64)y +
+                   (rc_noise_u64)29 * (rc_noise_u64)z;
+  return rc_noise_frand((rc_noise_i64)h);
+}
+
+/* A lattice coordinate as a 64-bit integer: values beyond its range (or NaN) are clamped
+ * rather than converted with undefined behaviour. */
+RC_NOISE_FN rc_noise_i64 rc_noise_lattice(RC_NOISE_REAL v) {
+  if (!(v == v)) return 0;
+  if (v > 1.0e17) return (rc_noise_i64)1.0e17;
+  if (v < -1.0e17) return (rc_noise_i64)-1.0e17;
+  return (rc_noise_i64)v;
 }
 
 RC_NOISE_BIG RC_NOISE_REAL rc_fnoise3(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_NOISE_REAL z) {
@@ -129,8 +141,8 @@ RC_NOISE_BIG RC_NOISE_REAL rc_fnoise3(RC_NOISE_REAL x, RC_NOISE_REAL y, RC_NOISE
   rc_noise_i64 target[3], corner[3], v[3];
   RC_NOISE_REAL val[8];
   for (int i = 0; i < 3; i++) {
-    target[i] = (rc_noise_i64)(step * p[i]);
-    corner[i] = (rc_noise_i64)(step * floor(p[i]));
+    target[i] = rc_noise_lattice(step * p[i]);
+    corner[i] = rc_noise_lattice(step * floor(p[i]));
   }
   /* val[k]: value at the cube corner whose axis-i offset is bit i of k. */
   for (int k = 0; k < 8; k++)
