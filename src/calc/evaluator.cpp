@@ -131,6 +131,15 @@ double Evaluator::eval_variable(std::string_view name, const std::string& ctx) {
 }
 
 double Evaluator::eval_node(const Node& n, const std::string& ctx, Frame* frame) {
+  // Long operator chains make deep trees, and recursion through variables walks them again at
+  // every level: the total nesting is bounded too, so that it ends in an error, not in a stack
+  // overflow.
+  if (node_depth_ >= kMaxNodeDepth) throw FatalError("expression too deeply nested to evaluate");
+  struct Nest {
+    int& d;
+    explicit Nest(int& x) : d(x) { ++d; }
+    ~Nest() { --d; }
+  } nest{node_depth_};
   switch (n.op) {
   case Op::Num:
     return n.num;

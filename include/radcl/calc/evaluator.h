@@ -70,6 +70,8 @@ private:
   std::vector<std::pair<std::uint64_t, double>> cache_; // by Definition::id
   int max_depth_ = 400;
   int depth_ = 0;
+  static constexpr int kMaxNodeDepth = 8000;
+  int node_depth_ = 0;
   int errors_ = 0;
   bool warn_ = true;
   bool used_context_ = false;
