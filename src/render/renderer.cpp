@@ -354,9 +354,13 @@ struct Renderer::Impl {
       std::vector<double> b(n2), e(n2, 0.0);
       for (std::size_t k = 0; k < n2; ++k)
         b[k] = bright(res[h.first + k].value);
+      bool black_pair = false; // see TallyTree::allocate
       auto diff = [&](std::size_t a, std::size_t c) {
         const double s = b[a] + b[c];
-        if (s <= 0) return;
+        if (s <= 0) {
+          black_pair = true;
+          return;
+        }
         const double d = (b[a] - b[c]) * (b[a] - b[c]) / s;
         e[a] += d;
         e[c] += d;
@@ -368,6 +372,7 @@ struct Renderer::Impl {
           if (j) diff(k, k - 1);
           if (i && j) diff(k, k - ns - 1);
         }
+      if (black_pair) continue;
       // Corners and edges have fewer neighbours.
       for (std::size_t k : {std::size_t{0}, ns - 1, (ns - 1) * ns, n2 - 1})
         e[k] *= 8.0 / 3.0;
