@@ -141,9 +141,8 @@ TEST(GoldenAmbientCache, OfficeClearDefaultFromScratch) {
 
 // Issue 7's accuracy bound: against office_clear_high, radcl's mean and worst sensor errors at
 // most 1.5 times those of Radiance's default run. Known gap, kept disabled (bound unchanged):
-// with -as super-sampling of the records (as Radiance does) radcl is 2.5% low on average
-// (Radiance 1.4%: the bound allows 2.2%), worst 5.3-9%; without it 1.0-1.4% on average but
-// worst up to 11% (docs/ambient.md).
+// the mean now passes (2.0-2.1% against 2.2%), the worst sensor does not reliably (7.0-8.1%
+// against 7.6%; docs/ambient.md).
 TEST(GoldenAmbientCache, DISABLED_OfficeClearDefaultAccuracy) {
   auto ours = rtrace_sensors("-u- -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3",
                              "office_clear.oct", "office_grid.pts");
