@@ -25,6 +25,7 @@ render::RenderSettings render_settings(const options::RenderOptions& r) {
   s.ss = r.specular_sampling;
   s.st = r.specular_threshold;
   s.av = r.ambient_value;
+  s.aw = r.ambient_value_weight;
   s.ab = r.ambient_bounces;
   s.ad = r.ambient_divisions;
   s.as = r.ambient_supersamples;

@@ -357,10 +357,6 @@ int rpict_main(int argc, char** argv) {
   }
   if (opt.pixel_motion > 0 && opt.sequence_start <= 0)
     warning("-pm needs a view sequence (-S): no motion blur");
-  // Radiance averages -av with the cache's values only (ambient.c's avsum): with -aa 0 -aw
-  // changes nothing there either.
-  if (opt.render.ambient_value_weight > 0 && opt.render.ambient_accuracy > 0)
-    warning("-aw needs the irradiance cache's values: the ambient value is used as given");
   if (persist && !server && !cli::create_persist_file(opt.persist_file))
     return cli::attach_persist(opt.persist_file, args[0]); // another one was quicker
 

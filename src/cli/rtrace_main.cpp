@@ -345,10 +345,6 @@ int rtrace_main(int argc, char** argv) {
   // Refuse what would silently give other answers than Radiance's.
   if (spec.trace_mode()) cmd.opt.nproc = 1; // as Radiance: trace mode runs one process
   if (!cmd.opt.render.photon_maps.empty()) throw FatalError("photon maps (-ap) are not supported");
-  // Radiance averages -av with the cache's values only (ambient.c's avsum): with -aa 0 -aw
-  // changes nothing there either.
-  if (cmd.opt.render.ambient_value_weight > 0 && cmd.opt.render.ambient_accuracy > 0)
-    warning("-aw needs the irradiance cache's values: the ambient value is used as given");
   const bool persist = cmd.opt.persist != options::RtraceOptions::Persist::None;
   if (persist && !server && !cli::create_persist_file(cmd.opt.persist_file))
     return cli::attach_persist(cmd.opt.persist_file, args[0]); // another one was quicker

@@ -181,4 +181,32 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
   return out;
 }
 
+std::array<double, 3> averaged_ambient_value(const std::array<double, 3>& av, int aw,
+                                             std::span<const ambient::AmbientRecord> records) {
+  auto bright = [](double r, double g, double b) {
+    return 0.265074126 * r + 0.670114631 * g + 0.064811243 * b;
+  };
+  if (aw <= 0) return av;
+  double sum = 0;
+  std::size_t n = 0;
+  for (const ambient::AmbientRecord& a : records) {
+    double b = bright(a.val[0], a.val[1], a.val[2]);
+    if (b > 1e-6) { // Radiance's FTINY
+      sum += std::log(b);
+      ++n;
+    }
+  }
+  if (n == 0) return av;
+  const double k = std::log(0.5); // each bounce absorbs half on average (AVGREFL)
+  const double l = bright(av[0], av[1], av[2]);
+  if (l > 1e-6) {
+    double f = std::exp((std::log(l) * aw + sum + k * static_cast<double>(n)) /
+                        (aw + static_cast<double>(n))) /
+               l;
+    return {av[0] * f, av[1] * f, av[2] * f};
+  }
+  double g = std::exp(sum / static_cast<double>(n) + k);
+  return {g, g, g};
+}
+
 } // namespace radcl::render

@@ -214,6 +214,11 @@ struct Renderer::Impl {
     if (uses_cache(settings))
       cache = build_ambient_cache(cache_records, geom.centre(), settings.aa);
     base.amb.z = static_cast<float>(cache.nodes.size());
+    if (settings.aw > 0 && uses_cache(settings)) {
+      auto v = averaged_ambient_value({settings.av[0], settings.av[1], settings.av[2]}, settings.aw,
+                                      cache_records);
+      base.av = f4(v[0], v[1], v[2], settings.lw);
+    }
     amb_records = upload(ctx, cache.records);
     amb_nodes = upload(ctx, cache.nodes);
     rc_params p = base;

@@ -115,3 +115,32 @@ TEST(AmbientCacheBvh, MinimumRadiusAsSetambres) {
   EXPECT_DOUBLE_EQ(render::ambient_max_radius(1000, 1000), 64.0);
   EXPECT_DOUBLE_EQ(render::ambient_max_radius(25.6, 0), 0.2 * 25.6);
 }
+
+// -aw (Radiance's dumbamb): the log-domain running average of -av with the records' values.
+TEST(AmbientValueWeight, AveragesInTheLogDomain) {
+  std::vector<ambient::AmbientRecord> recs(3);
+  recs[0].val = {1, 1, 1};
+  recs[1].val = {4, 4, 4};
+  recs[2].val = {0, 0, 0}; // black values are not counted
+  const double k = std::log(0.5);
+  // Grey -av 2 with weight 2: exp((2 ln 2 + ln 1 + ln 4 + 2 k) / 4) / 2 times -av.
+  auto v = render::averaged_ambient_value({2, 2, 2}, 2, recs);
+  double f = std::exp((2 * std::log(2.0) + std::log(4.0) + 2 * k) / 4) / 2;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(v[c], 2 * f, 1e-12);
+  // A coloured -av keeps its colour, scaled by its brightness's new average.
+  v = render::averaged_ambient_value({1, 0.5, 0.25}, 1, recs);
+  double l = 0.265074126 * 1 + 0.670114631 * 0.5 + 0.064811243 * 0.25;
+  f = std::exp((std::log(l) + std::log(4.0) + 2 * k) / 3) / l;
+  EXPECT_NEAR(v[0], f, 1e-12);
+  EXPECT_NEAR(v[1], 0.5 * f, 1e-12);
+  EXPECT_NEAR(v[2], 0.25 * f, 1e-12);
+  // Black -av: the records' geometric mean times 0.5, grey.
+  v = render::averaged_ambient_value({0, 0, 0}, 1, recs);
+  EXPECT_NEAR(v[1], 0.5 * 2.0, 1e-12);
+  // -aw 0, or no value to average: -av unchanged.
+  v = render::averaged_ambient_value({2, 3, 4}, 0, recs);
+  EXPECT_EQ(v[1], 3);
+  v = render::averaged_ambient_value({2, 3, 4}, 5, {});
+  EXPECT_EQ(v[2], 4);
+}

@@ -152,3 +152,22 @@ TEST(GoldenAmbientCache, DISABLED_OfficeClearDefaultAccuracy) {
   EXPECT_LE(e.mean, 1.5 * r.mean) << "radcl " << e.mean << ", Radiance " << r.mean;
   EXPECT_LE(e.worst, 1.5 * r.worst) << "radcl " << e.worst << ", Radiance " << r.worst;
 }
+
+// -aw: rays past the last bounce take -av averaged with the records' values (here a black -av:
+// half their geometric mean), which adds light; without a cache (-aa 0) -av stays as given.
+TEST(GoldenAmbientCache, AmbientValueWeight) {
+  auto mean = [](const std::vector<std::array<double, 3>>& v) {
+    double m = 0;
+    for (const auto& c : v)
+      m += c[0] / v.size();
+    return m;
+  };
+  const std::string o = "-u- -ab 1 -ad 1024 -as 256 -ar 64 -lw 1e-5 -av 0 0 0 ";
+  double plain = mean(rtrace_sensors(o + "-aa 0.1 -aw 0", "sphere.oct", "sphere_wall.pts"));
+  double weighted = mean(rtrace_sensors(o + "-aa 0.1 -aw 1", "sphere.oct", "sphere_wall.pts"));
+  EXPECT_GT(weighted, plain * 1.002);
+  EXPECT_LT(weighted, exact_sphere(8)); // far from every bounce's light
+  double a = mean(rtrace_sensors(o + "-aa 0 -aw 0", "sphere.oct", "sphere_wall.pts"));
+  double b = mean(rtrace_sensors(o + "-aa 0 -aw 10", "sphere.oct", "sphere_wall.pts"));
+  EXPECT_EQ(a, b);
+}

@@ -27,4 +27,11 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
 double ambient_min_radius(double cube_size, int ar);
 double ambient_max_radius(double cube_size, int ar);
 
+// -aw: the constant ambient value (-av) that rays past the last bounce take, averaged in the
+// log domain with the values of the cache's records (Radiance's dumbamb): unchanged when aw <= 0
+// or no record has a positive brightness; with a black -av the records' geometric mean times
+// 0.5 (grey).
+std::array<double, 3> averaged_ambient_value(const std::array<double, 3>& av, int aw,
+                                             std::span<const ambient::AmbientRecord> records);
+
 } // namespace radcl::render

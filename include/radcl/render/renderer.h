@@ -30,6 +30,7 @@ struct RenderSettings {
   bool dv = true, bv = true;
   double ss = 1, st = 0.15;
   Vec3d av{0, 0, 0};
+  int aw = 0; // -aw: weight of -av in its running average with the cache's values
   int ab = 0;
   int ad = 1024; // -aa 0 hemisphere divisions
   int as = 128;  // -as super-samples spread over a hemisphere's high-variance divisions
