@@ -219,6 +219,7 @@ private:
   render::RenderSettings settings_;
   std::unique_ptr<render::Renderer> renderer_;
   std::unique_ptr<ambient::AmbientFile> amb_; // -af with the cache in use
+  bool overture_done_ = false;
   options::View view_, last_;
   bool have_last_ = false;
   std::unique_ptr<cli::FdInputBuf> lines_;
@@ -227,6 +228,27 @@ private:
 
   // Radiance's nextview(): the next view line of standard input changes the current view (the
   // one before it becomes the previous view, for -pm). False at the end of the input.
+  // The overture (rad's low-resolution rpict run that only fills the ambient file): before a
+  // frame whose cache radcl builds, the view at an eighth of its resolution is rendered and
+  // discarded, so the cache's records are spread over the whole view in large batches before
+  // the picture's first band rather than grown band by band. Once per process: later frames
+  // find the records. RADCL_OVERTURE=0 leaves it out.
+  void overture(const render::PictureSettings& full) {
+    if (overture_done_ || !settings_.make_records) return;
+    overture_done_ = true;
+    if (const char* e = std::getenv("RADCL_OVERTURE"); e && std::string(e) == "0") return;
+    render::PictureSettings ps = full;
+    ps.xres = std::max(1, full.xres / 8);
+    ps.yres = std::max(1, full.yres / 8);
+    ps.ps = 1;
+    ps.first_row = 0;
+    ps.pm = 0;
+    ps.previous = nullptr;
+    render::render_picture(*renderer_, view_, ps, [&](const render::PictureRows&) {
+      cli::sync_ambient(amb_.get(), *renderer_);
+    });
+  }
+
   bool next_view() {
     last_ = view_;
     have_last_ = true;
@@ -312,6 +334,7 @@ private:
 
     progress.update(static_cast<double>(ps.first_row) / std::max(1, yres),
                     renderer_->stats().total(), true);
+    if (xres > 0 && yres > 0) overture(ps);
     if (xres > 0 && yres > 0)
       render::render_picture(*renderer_, view_, ps, [&](const render::PictureRows& rows) {
         out.rows(rows, zout.get());
