@@ -70,6 +70,9 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
 /* Lineage bit: the ray continues the primary straight through transmitting surfaces (glass,
  * dielectric): rtrace's unmirrored length (-o X, l) adds these rays' lengths. */
 #define RC_RAY_THROUGH 64u
+/* Lineage bit: a reflection about a normal tilted by a texture (glass, dielectric): rtrace's
+ * mirrored length (-o l, L) stops at the surface, as Radiance's rmt there. */
+#define RC_RAY_TILTED 128u
 
 /* One ray of a wave. org.w = tmin, dir.w = tmax; coef.xyz is the accumulated coefficient
  * (product of material coefficients down the tree), coef.w the scalar ray weight that -lw cuts. */

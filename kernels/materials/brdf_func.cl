@@ -9,6 +9,8 @@
  *   BRTDfunc: flags (bit 0: direct part even without diffuse), 6 coefficient expressions
  *     (rc_pattern_call: reflection rgb, transmission rgb), 3 functions (RC_NONE: literal 0). */
 
+#include "materials/raynormal.cl"
+
 typedef struct rc_brdf {
   rc_calc_env e;         /* the function record's ray variables, NxP .. CbP set */
   global const float* x; /* the record's transform; its descriptor follows at x + 25 */
@@ -22,24 +24,6 @@ typedef struct rc_brdf {
 
 static inline int rc_brdf_is_trans(uint t) {
   return t == RC_OBJ_TRANSFUNC || t == RC_OBJ_TRANSDATA;
-}
-
-/* Radiance's raynormal(): the normal ron tilted by the texture, turned back to the side the
- * ray sees (rod = -d . ron) if the tilt would change it. Returns -d . normal. */
-static float rc_brdf_raynormal(float3 ron, float3 pert, float3 d, float rod, float3* pn) {
-  *pn = ron;
-  if (dot(pert, pert) <= RC_FTINY * RC_FTINY) return rod;
-  float3 nn = ron + pert;
-  float len = length(nn);
-  if (len == 0.0f) return rod;
-  nn /= len;
-  float nd = -dot(nn, d);
-  if ((nd > 0.0f) != (rod > 0.0f)) {
-    nn += 2.0f * nd * d;
-    nd = -nd;
-  }
-  *pn = nn;
-  return nd;
 }
 
 /* The function record's environment for a ray of direction d meeting h, the normal seen as
@@ -83,7 +67,7 @@ static void rc_brdf2_setup(const rc_scene_args* S, rc_brdf* b, const rc_material
   }
   b->rdiff = b->mcolor * (1.0f - b->trans - b->rspec);
   b->tdiff = b->mcolor * td;
-  b->pdot = rc_brdf_raynormal(n, pert, d, -dot(d, n), &b->pnorm);
+  b->pdot = rc_raynormal(n, pert, d, -dot(d, n), &b->pnorm);
   rc_brdf_env(S, b, m, d, h, n);
 }
 
@@ -100,7 +84,7 @@ static void rc_brtdfunc_setup(const rc_scene_args* S, rc_brdf* b, const rc_mater
   b->mcolor = pcol;
   b->rdiff = pcol * (rod > 0.0f ? (float3)(a[0], a[1], a[2]) : (float3)(a[3], a[4], a[5]));
   b->tdiff = pcol * (float3)(a[6], a[7], a[8]);
-  b->pdot = rc_brdf_raynormal(ron, *pert, d, rod, &b->pnorm);
+  b->pdot = rc_raynormal(ron, *pert, d, rod, &b->pnorm);
   if (rod < 0.0f) {
     b->pdot = -b->pdot;
     b->pnorm = -b->pnorm;

@@ -5,6 +5,8 @@
 #ifndef RC_DIELECTRIC_CL
 #define RC_DIELECTRIC_CL
 
+#include "materials/raynormal.cl"
+
 /* Radiance's guarded logarithm for extinction: none for tn >= 1, capped for tn ~ 0. */
 static inline float rc_ext_log(float x) {
   return x < 1e-37f ? -100.0f : (x >= 1.0f ? 0.0f : log(x));
@@ -14,7 +16,7 @@ static inline float3 rc_extinction(global const float* a) {
 }
 
 typedef struct rc_refraction {
-  float3 n;        /* normal facing the arriving ray */
+  float3 n;        /* normal (tilted by textures) facing the arriving ray */
   float cos1;      /* -d.n > 0 */
   int set_medium;  /* the hit decides the arriving ray's medium ... */
   float3 cext_in;  /* ... which is this */
@@ -22,20 +24,30 @@ typedef struct rc_refraction {
   float refl;      /* Fresnel reflectance, 1 on total internal reflection */
   float trans;     /* (1 - R) eta^2 (radiance change across the boundary), 0 on TIR */
   float3 tdir;     /* refracted direction */
+  float3 rdir;     /* reflected direction */
+  float ratio;     /* index ratio across the boundary */
+  int textured;    /* a texture tilted the normal */
 } rc_refraction;
 
 /* type = RC_OBJ_DIELECTRIC (a: tn x3, n, hartmann) or RC_OBJ_INTERFACE (a: tn1 x3, n1, tn2
- * x3, n2; medium 1 inside, behind the normal). d = ray direction, nrm = geometric normal. */
-static inline rc_refraction rc_refract(uint type, global const float* a, float3 d, float3 nrm) {
+ * x3, n2; medium 1 inside, behind the normal). d = ray direction, nrm = geometric normal,
+ * pert = the textures' perturbation (world space, the surface's own orientation). As Radiance's
+ * m_dielectric, the tilted normal decides Fresnel and both directions; where it would send the
+ * refracted ray back or the reflected one through, the geometric normal takes over. */
+static inline rc_refraction rc_refract_tex(uint type, global const float* a, float3 d, float3 nrm,
+                                           float3 pert) {
   rc_refraction f;
   int iface = type == RC_OBJ_INTERFACE;
   float ratio = iface ? a[3] / a[7] : a[3] + a[4] / 500.0f; /* Hartmann at 500 nm */
-  f.cos1 = -dot(d, nrm);
-  f.n = nrm;
+  float rod = -dot(d, nrm);
+  f.cos1 = rc_raynormal(nrm, pert, d, rod, &f.n);
+  f.textured = rc_has_texture(pert);
+  float side = f.textured ? 1.0f : 0.0f; /* Radiance's hastexture, signed by the side */
   float3 none = (float3)(0.0f);
   if (f.cos1 < 0.0f) { /* leaving the inside medium */
     f.cos1 = -f.cos1;
-    f.n = -nrm;
+    f.n = -f.n;
+    side = -side;
     f.set_medium = 1;
     f.cext_in = rc_extinction(a);
     f.cext_out = iface ? rc_extinction(a + 4) : none; /* no global medium (-me) */
@@ -45,6 +57,10 @@ static inline rc_refraction rc_refract(uint type, global const float* a, float3 
     f.cext_in = iface ? rc_extinction(a + 4) : none;
     f.cext_out = rc_extinction(a);
   }
+  f.ratio = ratio;
+  float3 rd = d + 2.0f * f.cos1 * f.n;
+  if (f.textured && dot(rd, nrm) * side <= 1e-6f) rd = d + 2.0f * rod * nrm;
+  f.rdir = normalize(rd);
   float d2 = 1.0f - ratio * ratio * (1.0f - f.cos1 * f.cos1);
   f.refl = 1.0f;
   f.trans = 0.0f;
@@ -55,8 +71,15 @@ static inline rc_refraction rc_refract(uint type, global const float* a, float3 
   float rp = (1.0f / f.cos1 - ratio / cos2) / (1.0f / f.cos1 + ratio / cos2);
   f.refl = 0.5f * (rs * rs + rp * rp);
   f.trans = (1.0f - f.refl) * ratio * ratio;
-  f.tdir = normalize(ratio * d + (ratio * f.cos1 - cos2) * f.n);
+  float d1 = ratio * f.cos1 - cos2;
+  float3 t = ratio * d + d1 * f.n;
+  if (f.textured && dot(t, nrm) * side >= -1e-6f) t = ratio * d + d1 * side * nrm; /* not exact */
+  f.tdir = normalize(t);
   return f;
+}
+
+static inline rc_refraction rc_refract(uint type, global const float* a, float3 d, float3 nrm) {
+  return rc_refract_tex(type, a, d, nrm, (float3)(0.0f));
 }
 
 #endif

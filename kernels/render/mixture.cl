@@ -120,8 +120,8 @@ static void rc_shade_mixture(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit
 
 /* What one leaf of a mixture lets through of a shadow ray: a clear material's straight
  * transmission (a dielectric's only where it does not bend the ray, since a shadow ray cannot
- * split), an illum's alternate's (all of it without one), else nothing (as shadow rays meet
- * opaque materials elsewhere). */
+ * split; BRTDfunc's transmission expressions), an illum's alternate's (all of it without one),
+ * else nothing (as shadow rays meet opaque materials elsewhere). */
 static float3 rc_shadow_leaf(const rc_scene_args* S, uint idx, float3 d, const rc_hit* h) {
   rc_material m = S->materials[idx];
   if (m.type == RC_OBJ_ILLUM) {
@@ -144,14 +144,20 @@ static float3 rc_shadow_leaf(const rc_scene_args* S, uint idx, float3 d, const r
 #ifdef RADCL_HAS_GLASS
   case RC_OBJ_GLASS: {
     if (back_pass) return (float3)(1.0f);
-    rc_glass g = rc_glass_setup(a, m.nargs, -dot(d, n));
+    rc_glass g = rc_glass_hit(a, m.nargs, d, n, h->front ? pert : -pert); /* goes on straight */
     return g.hastrans ? g.trans * pcol : (float3)(0.0f);
+  }
+#endif
+#ifdef RADCL_HAS_FUNC_MATERIALS
+  case RC_OBJ_BRTDFUNC: { /* its transmission expressions (none on a compute error) */
+    float3 c;
+    return rc_brtdfunc_shadow(S, &m, d, h, pcol, pert, &c) ? c : (float3)(0.0f);
   }
 #endif
 #if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
   case RC_OBJ_DIELECTRIC:
   case RC_OBJ_INTERFACE: {
-    rc_refraction f = rc_refract(m.type, a, d, h->nrm.xyz);
+    rc_refraction f = rc_refract_tex(m.type, a, d, h->nrm.xyz, pert);
     return f.trans > 0.0f && all(f.tdir == d) ? (float3)(f.trans) : (float3)(0.0f);
   }
 #endif

@@ -521,19 +521,35 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
 #include "materials/brdf_shade.cl"
 #endif
 
+/* Sets and clears lineage bits of the child spawned since `before` (if it lived): a ray bent
+ * by a texture ends rtrace's ray lengths at the surface, as Radiance's rxt/rmt. */
+static inline void rc_relabel_child(rc_out* o, uint before, uint set, uint clear) {
+  if (o->write && o->nspawn > before)
+    o->spawned[o->nspawn - 1u].flags = (o->spawned[o->nspawn - 1u].flags | set) & ~clear;
+}
+
 #ifdef RADCL_HAS_GLASS
-/* glass: one straight transmitted ray weighted by T, one mirror ray weighted by R. */
+/* glass: a transmitted ray weighted by T, a mirror ray weighted by R, both from the normal
+ * tilted by textures, which also bend the transmitted ray (not an ambient one's). */
 static void rc_shade_glass(const rc_scene_args* S, rc_out* o, const rc_material* mat,
                            const rc_ray* r, const rc_hit* h, float3 n, rc_rng_key key) {
   const rc_params* P = &S->params;
+  global const float* a = S->args + mat->args;
   float3 d = r->dir.xyz;
-  float cos1 = -dot(d, n);
-  rc_glass g = rc_glass_setup(S->args + mat->args, mat->nargs, cos1);
-  if (g.hastrans)
-    rc_spawn(o, r, h->pos.xyz, d, g.trans * o->pcol, RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
+  float3 pert = h->front ? o->pert : -o->pert; /* flipped with the surface */
+  rc_glass g = rc_glass_hit(a, mat->nargs, d, n, pert);
+  int bent = g.textured && !(rc_crtype(r->flags) & RC_CR_AMBIENT);
+  uint before = o->nspawn;
+  if (g.hastrans) {
+    float3 t = bent ? rc_glass_bend(d, pert, rc_glass_index(a, mat->nargs)) : d;
+    rc_spawn(o, r, h->pos.xyz, t, g.trans * o->pcol, RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
              r->ambient_depth);
-  rc_spawn(o, r, h->pos.xyz, d + 2.0f * cos1 * n, g.refl, RC_RAY_REFLECTED, P->spec.z, P, key, 8,
-           r->ambient_depth);
+    if (bent) rc_relabel_child(o, before, 0u, RC_RAY_THROUGH);
+  }
+  before = o->nspawn;
+  rc_spawn(o, r, h->pos.xyz, d + 2.0f * g.pdot * g.pnorm, g.refl, RC_RAY_REFLECTED, P->spec.z, P,
+           key, 8, r->ambient_depth);
+  if (bent) rc_relabel_child(o, before, RC_RAY_TILTED, 0u);
 }
 #endif
 
@@ -547,16 +563,22 @@ static void rc_shade_dielectric(const rc_scene_args* S, rc_out* o, const rc_mate
                                 const rc_ray* r, const rc_hit* h, rc_rng_key key) {
   const rc_params* P = &S->params;
   float3 d = r->dir.xyz;
-  rc_refraction f = rc_refract(mat->type, S->args + mat->args, d, h->nrm.xyz);
+  rc_refraction f = rc_refract_tex(mat->type, S->args + mat->args, d, h->nrm.xyz, o->pert);
+  /* Radiance's flatsurface: a texture (but for ambient rays) ends the ray lengths here. */
+  int curved = f.textured && !(rc_crtype(r->flags) & RC_CR_AMBIENT);
+  uint before = o->nspawn;
   if (f.trans > 0.0f) {
     float3 keep = o->cext;
     o->cext = f.cext_out;
     rc_spawn(o, r, h->pos.xyz, f.tdir, (float3)(f.trans), RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
              r->ambient_depth);
     o->cext = keep;
+    if (curved && fabs(f.ratio - 1.0f) > RC_FTINY) rc_relabel_child(o, before, 0u, RC_RAY_THROUGH);
   }
-  rc_spawn(o, r, h->pos.xyz, normalize(d + 2.0f * f.cos1 * f.n), (float3)(f.refl), RC_RAY_REFLECTED,
-           P->spec.z, P, key, 8, r->ambient_depth);
+  before = o->nspawn;
+  rc_spawn(o, r, h->pos.xyz, f.rdir, (float3)(f.refl), RC_RAY_REFLECTED, P->spec.z, P, key, 8,
+           r->ambient_depth);
+  if (curved) rc_relabel_child(o, before, RC_RAY_TILTED, 0u);
 }
 #else
 static inline int rc_is_dielectric(uint type) {
@@ -942,7 +964,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
 #ifdef RADCL_HAS_GLASS
     case RC_OBJ_GLASS: {
       if (back_pass) break;
-      rc_glass g = rc_glass_setup(a, m.nargs, -dot(d, n));
+      rc_glass g = rc_glass_hit(a, m.nargs, d, n, h->front ? pert : -pert); /* goes on straight */
       if (!g.hastrans) return RC_SH_BLOCKED;
       coef = g.trans * pcol;
       break;
@@ -956,7 +978,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
 #if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
     case RC_OBJ_DIELECTRIC:
     case RC_OBJ_INTERFACE: {
-      rc_refraction f = rc_refract(m.type, a, d, h->nrm.xyz);
+      rc_refraction f = rc_refract_tex(m.type, a, d, h->nrm.xyz, pert);
       if (f.trans <= 0.0f) return RC_SH_BLOCKED; /* total internal reflection */
       coef = (float3)(f.trans);
       next_cext = f.cext_out;

@@ -1034,7 +1034,9 @@ struct Renderer::Impl {
     for (std::size_t i = 0; i < n; ++i)
       if ((queue[i].flags & RC_RAY_MIRRORED) &&
           (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED && queue[i].depth == 1)
-        results[slot(queue[i].primary)].mirror_t = gh[i] ? gh[i]->t : 1e10;
+        results[slot(queue[i].primary)].mirror_t = (queue[i].flags & RC_RAY_TILTED) ? 0.0
+                                                   : gh[i]                          ? gh[i]->t
+                                                                                    : 1e10;
     // The straight continuation through transmitting surfaces: its lengths add up (X).
     for (std::size_t i = 0; i < n; ++i)
       if ((queue[i].flags & RC_RAY_THROUGH) &&

@@ -338,6 +338,54 @@ TEST_F(FuncMaterials, InstancePlacesTheFunction) {
   expect_rgb(res[0].value, {want, want, want}, "instance");
 }
 
+// The BRDF materials as sides of a mixture (Radiance's raymixture): each side shades the hit
+// alone, weighted by its share. A plasfunc (with a colour pattern of its own, its function of
+// RdotP CrP NzP) and a plain plastic at coefficient 0.3, seen obliquely under the sun overhead.
+TEST_F(FuncMaterials, PlasfuncSideOfMixture) {
+  const std::string rest = "void colorfunc halve 4 0.5 0.5 0.5 . 0 0\n"
+                           "halve plasfunc pf 2 viewdep f.cal 0 4 0.5 0.5 0.5 0.5\n"
+                           "void plastic pl 0 0 5 0.2 0.4 0.6 0 0\n"
+                           "void mixfunc m 4 pf pl 0.3 . 0 0";
+  auto v = render({0, 0, 1}, rest, "m", {{{-1, 0, 1}, unit(1, 0, -1)}});
+  double c = 0.5 * 0.5, rspec = 0.5;                              // CrP: colour x pattern
+  double f = std::sqrt(0.5) * c + 1;                              // RdotP CrP + NzP
+  double a = kSun * kOmega * (c * (1 - rspec) / kPi + f * rspec); // ldot = 1
+  Rgb b{kSun * kOmega * 0.2 / kPi, kSun * kOmega * 0.4 / kPi, kSun * kOmega * 0.6 / kPi};
+  expect_rgb(v[0], {0.3 * a + 0.7 * b[0], 0.3 * a + 0.7 * b[1], 0.3 * a + 0.7 * b[2]},
+             "plasfunc side");
+}
+
+// A BRTDfunc side: its mirror ray (weight 0.5) sees a green glow patch at z = 3, its front
+// diffuse part (0.2) the sun; the other side a plastic, coefficient 0.3.
+TEST_F(FuncMaterials, BrtdfuncSideOfMixture) {
+  const std::string rest =
+      "void glow patchglow 0 0 4 0 5 0 0\n"
+      "patchglow polygon patch 0 0 12 2 -1 3 2 1 3 4 1 3 4 -1 3\n"
+      "void BRTDfunc bt 10 0.5 0.5 0.5 0 0 0 0 0 0 . 0 9 0.2 0.2 0.2 0 0 0 0 0 0\n"
+      "void plastic pl 0 0 5 0.2 0.4 0.6 0 0\n"
+      "void mixfunc m 4 bt pl 0.3 . 0 0";
+  auto v = render({0, 0, 1}, rest, "m", {{{-1, 0, 1}, unit(1, 0, -1)}});
+  double diff = kSun * kOmega * 0.2 / kPi;
+  Rgb a{diff, 0.5 * 5 + diff, diff};
+  Rgb b{kSun * kOmega * 0.2 / kPi, kSun * kOmega * 0.4 / kPi, kSun * kOmega * 0.6 / kPi};
+  expect_rgb(v[0], {0.3 * a[0] + 0.7 * b[0], 0.3 * a[1] + 0.7 * b[1], 0.3 * a[2] + 0.7 * b[2]},
+             "BRTDfunc side");
+}
+
+// Shadow rays through a mixture pass a BRTDfunc side's transmission for its share (a void side
+// passes whole): a grey floor under a sheet mixing a BRTDfunc (transmission 0.6) with void at
+// 0.3 receives the sun times 0.3 x 0.6 + 0.7.
+TEST_F(FuncMaterials, BrtdfuncSideTransmitsShadowRays) {
+  const std::string rest =
+      "void plastic grey 0 0 5 0.5 0.5 0.5 0 0\n"
+      "void BRTDfunc sheet 10 0 0 0 0.6 0.6 0.6 0 0 0 . 0 9 0 0 0 0 0 0 0 0 0\n"
+      "void mixfunc mx 4 sheet void 0.3 . 0 0\n"
+      "mx polygon roof 0 0 12 -50 -50 1 50 -50 1 50 50 1 -50 50 1";
+  auto v = render({0, 0, 1}, rest, "grey", {{{0, 0, 0.5}, {0, 0, -1}}});
+  double d = kSun * kOmega * 0.5 / kPi * (0.3 * 0.6 + 0.7);
+  expect_rgb(v[0], {d, d, d}, "shadowed floor");
+}
+
 TEST_F(FuncMaterials, Errors) {
   fails("void plasfunc m 1 const 0 4 0.5 0.5 0.5 0", "bad # arguments for plasfunc \"m\"");
   fails("void plasfunc m 2 const f.cal 0 3 0.5 0.5 0.5", "bad # arguments for plasfunc \"m\"");

@@ -95,8 +95,10 @@ struct PrimaryResult {
   Vec3d point{};                   // first intersection (the origin if nothing was hit)
   Vec3d normal{};                  // unperturbed normal at it, 0 if nothing hit
   std::uint32_t surface = RC_NONE; // compiled surface of the first hit (names), or RC_NONE
-  Vec3d mirrored{};     // part of `value` that came through the first hit's mirror reflection
-  double mirror_t = -1; // distance the mirror-reflected ray travelled (1e10: nothing hit), -1: none
+  Vec3d mirrored{}; // part of `value` that came through the first hit's mirror reflection
+  // Distance the mirror-reflected ray travelled (1e10: nothing hit; 0: reflected about a
+  // texture-tilted normal, so the image lies at the surface), -1: none.
+  double mirror_t = -1;
   double through_t = -1; // length of the straight transmission beyond the first hit, -1: none
   std::vector<TracedRay> traced; // trace mode: the tree in post-order (children first)
 };
