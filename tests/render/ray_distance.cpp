@@ -2,9 +2,10 @@
 // primary's start to the point a pattern is evaluated at, times S, as Radiance's raydist()
 // sums the segments up the parent chain; Ts: the segment plus the shadow segments before it.
 // A glowing floor (z = 0, radiance 1, modulated by a brightfunc of T) seen directly, in a
-// mirror, through glass and through surfaces a ray passes; and light sources and glass panes
-// met by shadow rays, where a pattern's effect is the ratio of the floor's radiance with it to
-// the radiance without it. Hand values: the segments' lengths.
+// mirror, through glass and through surfaces a ray passes; a glowing ceiling seen by ambient
+// samples; light sources and glass panes met by shadow rays, where a pattern's effect is the
+// ratio of the floor's radiance with it to the radiance without it. Hand values: the segments'
+// lengths.
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "radcl/device/context.h"
+#include "radcl/render/ambient_cache.h"
 #include "radcl/render/renderer.h"
 #include "test_env.h"
 
@@ -64,16 +66,23 @@ protected:
     fs::remove_all(dir);
   }
   // Red channel of each ray's radiance in `scene`.
-  std::vector<double> render(const std::string& scene, const std::vector<Ray>& rays,
-                             bool bv = true) {
-    std::ofstream(dir / "scene.rad", std::ios::trunc) << scene;
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
+  static render::RenderSettings settings(bool bv = true) {
     render::RenderSettings st;
     st.ab = 0;
     st.dj = 0;
     st.ds = 0; // one sample per source: its centre
     st.dt = 0; // every shadow ray tested
     st.bv = bv;
+    return st;
+  }
+  std::vector<double> render(const std::string& scene, const std::vector<Ray>& rays,
+                             bool bv = true) {
+    return render(scene, rays, settings(bv));
+  }
+  std::vector<double> render(const std::string& scene, const std::vector<Ray>& rays,
+                             const render::RenderSettings& st) {
+    std::ofstream(dir / "scene.rad", std::ios::trunc) << scene;
+    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
     render::Renderer r(ls, st, device::default_context());
     std::vector<render::PrimaryRay> pr;
     for (const Ray& ray : rays)
@@ -199,4 +208,52 @@ TEST_F(RayDistance, ShadowRayThroughGlass) {
   expect_rel(s[1] / plain[1], 1.8 * slant, "Ts at the second pane, slanted");
   auto d = render(kTDouble + "void " + lamp + floor + low + high("bf"), rays);
   expect_rel(d[0] / plain[0], 2 * 2.8, "S = 2");
+}
+
+// (e) Ambient samples are children of the ray that hit the floor: a grey floor (reflectance
+// 0.5) seen from z = 1 under a glowing ceiling (z = 2, half-size 10) of radiance T, so a
+// sample meeting the ceiling r away brings 1 + r. The floor's radiance is
+// 0.5 / pi x the integral over the ceiling of (1 + r) h^2 / r^4 dA (h = 2), about 2.13; were
+// the samples to start from 0 it would be about 1.65. Hemisphere sampling (-aa 0, 64 x 64
+// strata) and the irradiance cache (records made from the samples of the ray that needs
+// them) both stay within 2% of the integral.
+namespace {
+double ceiling_integral(double h, double half, bool with_primary) {
+  const int n = 2000;
+  const double step = 2 * half / n;
+  double sum = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double x = -half + (i + 0.5) * step, y = -half + (j + 0.5) * step;
+      const double r2 = x * x + y * y + h * h, r = std::sqrt(r2);
+      sum += ((with_primary ? 1 : 0) + r) * h * h / (r2 * r2);
+    }
+  return sum * step * step;
+}
+} // namespace
+
+TEST_F(RayDistance, AmbientSamplesContinueTheTree) {
+  const std::string scene = kT + "bf glow ceil 0 0 4 1 1 1 0\n" + pane("ceil", "c", 2, false) +
+                            "void plastic grey 0 0 5 0.5 0.5 0.5 0 0\n" +
+                            pane("grey", "f", 0, true);
+  const double want = 0.5 / M_PI * ceiling_integral(2, 10, true);
+  const double without = 0.5 / M_PI * ceiling_integral(2, 10, false);
+  ASSERT_GT(want - without, 0.1 * want); // the test tells the two apart
+  const std::vector<Ray> rays = {{{0, 0, 1}, {0, 0, -1}}, {{0.2, -0.1, 1}, {0, 0, -1}}};
+  render::RenderSettings st = settings();
+  st.ab = 1;
+  st.ad = 4096;
+  st.as = 0;
+  st.lw = 1e-6; // no Russian roulette among the samples
+  auto v = render(scene, rays, st);
+  for (double x : v)
+    EXPECT_NEAR(x, want, 0.02 * want) << "-aa 0";
+  st.aa = 0.1;
+  st.make_records = true;
+  st.cube_size = 20;
+  st.ambient_min_radius = render::ambient_min_radius(20, 128);
+  st.ambient_max_radius = render::ambient_max_radius(20, 128);
+  auto c = render(scene, rays, st);
+  for (double x : c)
+    EXPECT_NEAR(x, want, 0.02 * want) << "irradiance cache";
 }
