@@ -92,6 +92,10 @@ typedef struct rc_ray {
   rc_u32 inside; /* antimatter: four signed 8-bit crossing counts (one per antimatter with a
                     shading modifier) */
   rc_u32 cell;   /* a hemisphere sample the host may super-sample: RC_CELL_* bits, else 0 */
+  float dist0;   /* length of the ray tree from the primary's start to this ray's origin (the
+                    sum of its ancestors' segments): patterns see T = (dist0 + t) x S, as
+                    Radiance's raydist() sums r->rot up the parent chain. 0 for a primary. */
+  rc_u32 pad0, pad1, pad2;
 } rc_ray;
 
 /* rc_ray.cell of the first samples of a hemisphere whose -as super-sampling the host decides
@@ -108,7 +112,9 @@ typedef struct rc_hit {
   rc_float4 pos; /* hit point (re-centred), w = distance t; t < 0 for a miss (then surface is
                     the distant source hit, if any) */
   rc_float4 nrm; /* unit geometric normal in Radiance's orientation (not flipped), w unused */
-  rc_float4 uv;  /* x,y: triangle barycentrics or surface parameters */
+  rc_float4 uv;  /* x,y: triangle barycentrics or surface parameters; z,w: 0 from the host, set
+                    by the kernels from the ray before patterns see the hit: the ray's dist0,
+                    and of it the shadow segments (rc_shadow.sdist0) */
   rc_u32 surface; /* compiled surface; RC_NONE for a miss that hits no distant source */
   rc_u32 prim;    /* triangle within a polygon or mesh */
   rc_u32 source;  /* light-source index of the surface hit, else RC_NONE */
@@ -228,7 +234,9 @@ typedef struct rc_shadow {
   rc_u32 pad1;
   rc_u32 clip;   /* antimatter state of the surface point it leaves (as rc_ray) */
   rc_u32 inside;
-  rc_u32 pad2, pad3;
+  float dist0;  /* length of the ray tree before its origin: the surface ray's dist0 plus that
+                   ray's hit distance, plus the shadow segments before this one (T) */
+  float sdist0; /* of that, the shadow segments alone (Radiance's Ts: the shadow chain) */
 } rc_shadow;
 
 /* Rendering settings the kernels read (from the -d*, -s*, -a*, -l* options). */
@@ -325,7 +333,7 @@ typedef struct rc_rng_key {
   S(rc_amb_sample) S(rc_amb_made)
 #define RADCL_LAYOUT_FIELDS(F)                                                                 \
   F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
-  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside) F(rc_ray, cell)                  \
+  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, pad2)                  \
   F(rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim)               \
   F(rc_hit, source) F(rc_hit, front)                                                           \
   F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(rc_surface, object)      \
@@ -337,7 +345,7 @@ typedef struct rc_rng_key {
   F(rc_source, mirror) F(rc_mirror, plane) F(rc_mirror, centre) F(rc_mirror, refl)             \
   F(rc_mirror, surface) F(rc_mirror, verts) F(rc_mirror, nverts) F(rc_mirror, pad0)            \
   F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, cext) F(rc_shadow, primary)              \
-  F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1) F(rc_shadow, clip) F(rc_shadow, inside) F(rc_shadow, pad3)                                   \
+  F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1) F(rc_shadow, clip) F(rc_shadow, inside) F(rc_shadow, dist0) F(rc_shadow, sdist0)                                   \
   F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)    \
   F(rc_params, av) F(rc_params, direct) F(rc_params, spec) F(rc_params, seed)                  \
   F(rc_params, lr) F(rc_params, flags) F(rc_params, ab) F(rc_params, nsources)                 \

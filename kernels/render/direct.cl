@@ -97,10 +97,11 @@ static void rc_direct_select(global rc_shadow* g, uint n, float known, const rc_
 #ifdef RADCL_HAS_PATTERNS
 /* The colour the patterns of a source's material give the point its shadow ray (from p along
  * l) meets at distance dist: Radiance traces that ray and shades the source's surface, patterns
- * included (brightdata distributions on light and illum). Virtual sources and distant ones are
- * not modulated (docs/render.md). */
+ * included (brightdata distributions on light and illum). The shadow ray's T continues its
+ * parent's: dist0 (the ray tree up to p) plus dist; its Ts is dist. Virtual sources and distant
+ * ones are not modulated (docs/render.md). */
 static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* src, float3 p,
-                                float3 l, float dist) {
+                                float3 l, float dist, float dist0) {
   float3 pcol = (float3)(1.0f);
   if (src->surface == RC_NONE || (src->flags & RC_SRCF_VIRTUAL) || src->kind == RC_SRC_DISTANT)
     return pcol;
@@ -119,7 +120,7 @@ static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* 
     n = normalize(v - dot(v, src->axis.xyz) * src->axis.xyz);
   }
   h.nrm = (float4)(n, 0.0f);
-  h.uv = (float4)(0.0f);
+  h.uv = (float4)(0.0f, 0.0f, dist0, 0.0f);
   h.surface = src->surface;
   h.prim = 0u;
   h.source = RC_NONE;
@@ -167,7 +168,7 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, s
         continue;
       float3 ls = rc_source_radiance(src, l, dist);
 #ifdef RADCL_HAS_PATTERNS
-      ls *= rc_source_pattern(S, src, p, l, dist);
+      ls *= rc_source_pattern(S, src, p, l, dist, o->dist);
 #endif
       if (src->flags & RC_SRCF_VIRTUAL)
         ls *= rc_virtual_path(S->sources, S->mirrors, S->verts, src, p, l);

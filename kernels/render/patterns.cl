@@ -10,7 +10,7 @@
 #include "render/text.cl"
 #endif
 
-/* Point, direction and normal of a hit mapped into a pattern's function space. */
+/* Point, direction, normal and distances of a hit mapped into a pattern's function space. */
 static void rc_pattern_ray(global const float* x, float3 d, const rc_hit* h, rc_calc_env* e) {
   float3 r0 = (float3)(x[0], x[1], x[2]), r1 = (float3)(x[3], x[4], x[5]);
   float3 r2 = (float3)(x[6], x[7], x[8]), tr = (float3)(x[9], x[10], x[11]);
@@ -34,8 +34,11 @@ static void rc_pattern_ray(global const float* x, float3 d, const rc_hit* h, rc_
     e->ray.v[RC_CALC_PY] = p.y;
     e->ray.v[RC_CALC_PZ] = p.z;
   }
-  e->ray.v[RC_CALC_T] = t * sc;
-  e->ray.v[RC_CALC_TS] = t * sc;
+  /* T: the whole ray tree's length to here (Radiance's raydist over the parent chain); Ts: this
+   * segment and the shadow segments before it. The kernels put what lies before the segment
+   * in the hit's uv.z and uv.w (device_types.h). */
+  e->ray.v[RC_CALC_T] = (h->uv.z + t) * sc;
+  e->ray.v[RC_CALC_TS] = (h->uv.w + t) * sc;
   e->ray.v[RC_CALC_RDOT] = clamp(-dot(d, nw), -1.0f, 1.0f);
   e->ray.v[RC_CALC_S] = sc;
   e->ray.v[RC_CALC_TX] = x[22];

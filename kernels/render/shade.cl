@@ -99,6 +99,8 @@ typedef struct rc_out {
   uint newclip; /* antimatter: clip set of transmitted children (Radiance's newcset) */
   uint slots;   /* antimatter: crossing counters a transmission through the hit changes */
   int side;     /* and by how much: +1 through the front, -1 through the back */
+  float dist;   /* length of the ray tree up to this hit (the ray's dist0 + t): where its
+                   children and shadow rays start (rc_ray.dist0) */
 } rc_out;
 
 static inline void rc_out_init(rc_out* o, int write) {
@@ -116,6 +118,7 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->newclip = 0u;
   o->slots = 0u;
   o->side = 0;
+  o->dist = 0.0f;
 }
 
 /* Write mode ends for good once `shadows` more shadow records or `spawns` more children would
@@ -134,7 +137,9 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
     s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
-    s.pad0 = s.pad1 = s.pad2 = s.pad3 = 0;
+    s.pad0 = s.pad1 = 0;
+    s.dist0 = o->dist;
+    s.sdist0 = 0.0f;
     s.clip = r->clip;
     s.inside = r->inside;
     s.primary = r->primary;
@@ -216,6 +221,8 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     r.cext_r = o->cext.x;
     r.cext_g = o->cext.y;
     r.cext_b = o->cext.z;
+    r.dist0 = o->dist;
+    r.pad0 = r.pad1 = r.pad2 = 0u;
     o->spawned[o->nspawn] = r;
   }
   o->nspawn++;
@@ -290,8 +297,7 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
      * then incomplete and the host shades it again once records cover the point. */
     if (P->amb.w > 0.0f) {
       if (!o->super)
-        rc_emit_ray(o, r, p, n, acoef, RC_RAY_AMBMISS, 0.0f, r->coef.w, r->depth,
-                    r->ambient_depth);
+        rc_emit_ray(o, r, p, n, acoef, RC_RAY_AMBMISS, 0.0f, r->coef.w, r->depth, r->ambient_depth);
       return (float3)(0.0f);
     }
   }
@@ -721,6 +727,10 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   o->cext = rc_ray_medium(&r);
   o->newclip = r.clip;
   if (h.surface == RC_NONE) return; /* nothing hit: black */
+  /* Patterns read T from the hit (patterns.cl); children start where this ray ends. */
+  h.uv.z = r.dist0;
+  h.uv.w = 0.0f;
+  o->dist = r.dist0 + fmax(h.pos.w, 0.0f);
 
   if (h.surface == RC_SURF_IRRADIANCE) { /* -I measurement point */
     rc_material m = S->materials[P->irradiance_material];
@@ -879,6 +889,8 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       if (!(src->flags & RC_SRCF_FOLLOW)) return RC_SH_REACHED;
       float3 n = h->nrm.xyz;
       s->org = (float4)(h->pos.xyz, P->spec.z);
+      s->dist0 += t;
+      s->sdist0 += t;
       s->dir = (float4)(d - 2.0f * dot(d, n) * n, distant ? s->dir.w : s->dir.w - t);
       s->source = src->parent;
       return (state & ~RC_SH_STATUS) | RC_SH_LATER | RC_SH_CONTINUE;
@@ -1004,6 +1016,8 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   s->dir = (float4)(d, distant ? s->dir.w : rest);
   s->contrib = (float4)(c, 0.0f);
   s->cext = (float4)(next_cext, 0.0f);
+  s->dist0 += t;
+  s->sdist0 += t;
 #ifdef RADCL_HAS_ANTIMATTER
   s->clip = next_clip;
   s->inside = next_inside;
@@ -1018,6 +1032,8 @@ kernel void rc_shadow_step(global rc_shadow* shadows, global const rc_hit* hits,
   RC_SCENE_INIT
   rc_shadow s = shadows[i];
   rc_hit h = hits[i];
+  h.uv.z = s.dist0; /* T and Ts of patterns met on the way (patterns.cl) */
+  h.uv.w = s.sdist0;
   uint st = rc_shadow_at(&S, &s, &h, state[i]);
   shadows[i] = s;
   state[i] = st;

@@ -196,6 +196,7 @@ struct Renderer::Impl {
   struct RayStart {
     std::uint32_t flags = RC_RAY_PRIMARY, depth = 0, ambient_depth = 0;
     float weight = 1;
+    float dist0 = 0; // the ray tree's length before it: the record's point is its parent's hit
   };
   rc_params base{};                 // the uploaded parameters, amb.w aside
   double ray_eps = 0;               // where secondary rays start
@@ -475,6 +476,7 @@ struct Renderer::Impl {
           s.depth = m->depth + 1;
           s.ambient_depth = m->ambient_depth + 1;
           s.weight = sw;
+          s.dist0 = m->dist0; // Radiance's samples are children of the ray that needs the value
           start.push_back(s);
         }
     }
@@ -662,12 +664,14 @@ struct Renderer::Impl {
       r.primary = prim[i].id != RC_NONE ? prim[i].id : static_cast<std::uint32_t>(first_index + i);
       r.flags = RC_RAY_PRIMARY;
       r.tally = static_cast<std::uint32_t>(i);
+      r.dist0 = 0;           // patterns' T counts from the primary's start
       if (!starts.empty()) { // a hemisphere sample of a record being made
         const RayStart& st = starts[first_index + i];
         r.flags = st.flags;
         r.depth = st.depth;
         r.ambient_depth = st.ambient_depth;
         r.coef.w = st.weight;
+        r.dist0 = st.dist0;
         r.org.w = static_cast<float>(ray_eps);
       }
     }

@@ -27,3 +27,11 @@ TEST(Layout, StructsAreSixteenByteMultiples) {
   EXPECT_EQ(sizeof(rc_source) % 16, 0u);
   EXPECT_EQ(sizeof(rc_rng_key), 16u);
 }
+
+// The wave buffers' per-ray cost: rc_ray carries the ray tree's length before its origin
+// (patterns' T), which took it from 96 to 112 bytes; rc_shadow keeps its size.
+TEST(Layout, RayAndShadowSizes) {
+  EXPECT_EQ(sizeof(rc_ray), 112u);
+  EXPECT_EQ(offsetof(rc_ray, dist0), 96u);
+  EXPECT_EQ(sizeof(rc_shadow), 96u);
+}
