@@ -1,8 +1,21 @@
-// TIFF and PNG through OpenImageIO.
-#include <OpenImageIO/imageio.h>
-
+// TIFF and PNG through OpenImageIO (left out of builds configured with RADCL_WITH_OIIO=OFF).
 #include "image_formats.h"
 #include "radcl/util/error.h"
+
+#ifndef RADCL_WITH_OIIO
+namespace radcl::image::detail {
+
+void write_oiio(const std::string& path, const FloatImage&, bool, double) {
+  throw FatalError("cannot write \"" + path + "\": this build has no OpenImageIO (TIFF, PNG)");
+}
+
+FloatImage read_oiio(const std::string& path) {
+  throw FatalError("cannot read \"" + path + "\": this build has no OpenImageIO (TIFF, PNG)");
+}
+
+} // namespace radcl::image::detail
+#else
+#include <OpenImageIO/imageio.h>
 
 namespace radcl::image::detail {
 
@@ -47,3 +60,4 @@ FloatImage read_oiio(const std::string& path) {
 }
 
 } // namespace radcl::image::detail
+#endif
