@@ -1,4 +1,5 @@
 #include "radcl/calc/evaluator.h"
+#include <cstdint>
 
 #include <cmath>
 
@@ -134,7 +135,11 @@ double Evaluator::eval_node(const Node& n, const std::string& ctx, Frame* frame)
   // Long operator chains make deep trees, and recursion through variables walks them again at
   // every level: the total nesting is bounded too, so that it ends in an error, not in a stack
   // overflow.
-  if (node_depth_ >= kMaxNodeDepth) throw FatalError("expression too deeply nested to evaluate");
+  const char marker = 0;
+  const auto here = reinterpret_cast<std::uintptr_t>(&marker);
+  if (node_depth_ == 0) stack_top_ = here;
+  if (node_depth_ >= kMaxNodeDepth || (stack_top_ > here && stack_top_ - here > kStackBudget))
+    throw FatalError("expression too deeply nested to evaluate");
   struct Nest {
     int& d;
     explicit Nest(int& x) : d(x) { ++d; }

@@ -5,6 +5,7 @@
 // rendering evaluates the generated device code instead (codegen.h).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -71,7 +72,12 @@ private:
   int max_depth_ = 400;
   int depth_ = 0;
   static constexpr int kMaxNodeDepth = 8000;
+  // Stack the evaluation may use below its outermost call: frames differ in size between
+  // builds (sanitizers make them several times larger), so the depth alone cannot bound it.
+  // 2 MiB fits the main thread's 8 MiB and a worker thread's 4 MiB.
+  static constexpr std::uintptr_t kStackBudget = 2u << 20;
   int node_depth_ = 0;
+  std::uintptr_t stack_top_ = 0;
   int errors_ = 0;
   bool warn_ = true;
   bool used_context_ = false;
