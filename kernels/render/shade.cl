@@ -374,6 +374,7 @@ static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, co
   return rad;
 }
 
+#include "materials/raynormal.cl"
 #include "render/direct.cl"
 
 /* Continues a ray unchanged past a surface it does not see (Radiance's raytrans: a TRANS ray,
@@ -460,6 +461,13 @@ static void rc_gauss_sample(rc_out* o, const rc_ray* r, float3 p, float3 n, floa
   }
 }
 
+/* Sets and clears lineage bits of the child spawned since `before` (if it lived): a ray bent
+ * by a texture ends rtrace's ray lengths at the surface, as Radiance's rxt/rmt. */
+static inline void rc_relabel_child(rc_out* o, uint before, uint set, uint clear) {
+  if (o->write && o->nspawn > before)
+    o->spawned[o->nspawn - 1u].flags = (o->spawned[o->nspawn - 1u].flags | set) & ~clear;
+}
+
 /* plastic, metal, trans and the irradiance meter: Radiance's normal.c. */
 static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material* mat,
                             const rc_ray* r, const rc_hit* h, float3 n, int flat, rc_rng_key key) {
@@ -467,12 +475,12 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
   global const float* a = S->args + mat->args;
   float3 d = r->dir.xyz;
   float3 p = h->pos.xyz;
-  /* A texture tilts the shading normal (not where it would face away from the ray). */
-  if (any(o->pert != (float3)(0.0f))) {
-    float3 pn = normalize(n + o->pert);
-    if (-dot(d, pn) > 0.001f) n = pn;
-  }
-  float cos1 = -dot(d, n);
+  /* As m_normal: a texture (flipped with the surface) tilts the shading normal, turned back to
+   * the ray's side if the tilt would change it (raynormal). */
+  float3 ron = n;
+  float3 pert = h->front ? o->pert : -o->pert;
+  int textured = rc_has_texture(pert);
+  float cos1 = rc_raynormal(ron, pert, d, -dot(d, ron), &n);
   float3 color = (float3)(a[0], a[1], a[2]) * o->pcol;
   rc_ward_iso m;
 #ifdef RADCL_HAS_METAL
@@ -506,33 +514,39 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
 
   rc_direct(S, o, &m, 0, r, p, n, d, flat, r->coef.xyz, rc_bright(known), key);
 
+  /* Textures bend the clear transmission to d - pert (not for ambient rays, nor where it would
+   * leave on the ray's side); its length still adds to rtrace's unmirrored one, as m_normal's
+   * rxt. */
+  int ambient = (rc_crtype(r->flags) & RC_CR_AMBIENT) != 0u;
+  float3 tdir = d;
+  if (textured && !ambient && dot(d - pert, ron) < -RC_FTINY) tdir = normalize(d - pert);
   if (!rough) {
-    if (rc_max3(m.specular) > RC_FTINY)
-      rc_spawn(o, r, p, d + 2.0f * cos1 * n, m.specular, RC_RAY_REFLECTED, eps, P, key, 8,
+    if (rc_max3(m.specular) > RC_FTINY) {
+      /* The mirror direction about the tilted normal (about the surface's where it would go
+       * into it); a textured reflection ends rtrace's mirrored length at the surface. */
+      float3 refl = d + 2.0f * fmax(cos1, 0.001f) * n;
+      if (textured && dot(refl, ron) <= RC_FTINY) refl = d + 2.0f * -dot(d, ron) * ron;
+      uint before = o->nspawn;
+      rc_spawn(o, r, p, normalize(refl), m.specular, RC_RAY_REFLECTED, eps, P, key, 8,
                r->ambient_depth);
+      if (textured && !ambient) rc_relabel_child(o, before, RC_RAY_TILTED, 0u);
+    }
     /* Clear transmission of a purely specular trans: the ray goes on, coloured. */
     if (m.tspec > RC_FTINY)
-      rc_spawn(o, r, p, d, m.tcolor * m.tspec, RC_RAY_TRANSMITTED, eps, P, key, 6,
+      rc_spawn(o, r, p, tdir, m.tcolor * m.tspec, RC_RAY_TRANSMITTED, eps, P, key, 6,
                r->ambient_depth);
   } else {
     if (rc_max3(m.specular) > P->spec.y)
       rc_gauss_sample(o, r, p, n, n, m.alpha2, m.specular, 1, P, key, 10, 9);
     /* Rough transmission above -st is sampled about the transmitted direction. */
     if (m.tspec > RC_FTINY && P->spec.y < m.tspec - RC_FTINY)
-      rc_gauss_sample(o, r, p, n, d, m.alpha2, m.tcolor * m.tspec, 0, P, key, 40, 60);
+      rc_gauss_sample(o, r, p, n, tdir, m.alpha2, m.tcolor * m.tspec, 0, P, key, 40, 60);
   }
 }
 
 #ifdef RADCL_HAS_FUNC_MATERIALS
 #include "materials/brdf_shade.cl"
 #endif
-
-/* Sets and clears lineage bits of the child spawned since `before` (if it lived): a ray bent
- * by a texture ends rtrace's ray lengths at the surface, as Radiance's rxt/rmt. */
-static inline void rc_relabel_child(rc_out* o, uint before, uint set, uint clear) {
-  if (o->write && o->nspawn > before)
-    o->spawned[o->nspawn - 1u].flags = (o->spawned[o->nspawn - 1u].flags | set) & ~clear;
-}
 
 #ifdef RADCL_HAS_GLASS
 /* glass: a transmitted ray weighted by T, a mirror ray weighted by R, both from the normal
@@ -706,9 +720,20 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
     if (!h.front) break; /* the back of a mirror is black */
     global const float* a = S->args + mat.args;
     float3 c = (float3)(a[0], a[1], a[2]) * o->pcol;
-    float cos1 = -dot(r.dir.xyz, n);
-    rc_spawn(o, &r, h.pos.xyz, r.dir.xyz + 2.0f * cos1 * n, c, RC_RAY_REFLECTED, P->spec.z, P, key,
-             8, r.ambient_depth);
+    float3 d = r.dir.xyz;
+    float3 dir = d + 2.0f * -dot(d, n) * n;
+    /* As m_mirror: a texture (but for ambient rays) tilts the reflection, unless it would go
+     * into the surface, and either way ends rtrace's mirrored length at the surface. */
+    int tilted = rc_has_texture(o->pert) && !(rc_crtype(r.flags) & RC_CR_AMBIENT);
+    if (tilted) {
+      float3 pn;
+      float pdot = rc_raynormal(n, o->pert, d, -dot(d, n), &pn);
+      float3 t = d + 2.0f * pdot * pn;
+      if (dot(t, n) > RC_FTINY) dir = normalize(t);
+    }
+    uint before = o->nspawn;
+    rc_spawn(o, &r, h.pos.xyz, dir, c, RC_RAY_REFLECTED, P->spec.z, P, key, 8, r.ambient_depth);
+    if (tilted) rc_relabel_child(o, before, RC_RAY_TILTED, 0u);
     break;
   }
 #endif

@@ -195,3 +195,49 @@ TEST_F(TextureBending, DielectricIndexOneIsClear) {
   expect_rgb(v[0].value, {kX0 + 10, 0, 0}, "index 1");
   EXPECT_NEAR(v[0].through_t, 1, 1e-6);
 }
+
+// trans (m_normal): the clear transmission goes along d - pert, normalised. A pane with
+// transmission 0.6, all of it clear, no specular reflection, white: from the front the ray lands
+// 0.1 back along x on the floor one unit down; its length still adds to the unmirrored one
+// (Radiance's rxt is not stopped by a texture on trans).
+TEST_F(TextureBending, TransFront) {
+  auto v = render("tilt trans tilted 0 0 7 1 1 1 0 0 0.6 1", "tilted", false, {{2, -1}});
+  expect_rgb(v[0].value, {0.6 * (kX0 - kA + 10), 0, 0}, "textured trans");
+  EXPECT_NEAR(v[0].through_t, std::sqrt(1 + kA * kA), 1e-5);
+  EXPECT_EQ(v[0].mirror_t, -1);
+  auto u = render("void trans clear 0 0 7 1 1 1 0 0 0.6 1", "clear", false, {{2, -1}});
+  expect_rgb(u[0].value, {0.6 * (kX0 + 10), 0, 0}, "plain trans");
+  EXPECT_NEAR(u[0].through_t, 1, 1e-6);
+}
+
+// From the back the surface and its perturbation are flipped: d - pert = (0.1, 0, 1), two units
+// up to the ceiling.
+TEST_F(TextureBending, TransBack) {
+  auto v = render("tilt trans tilted 0 0 7 1 1 1 0 0 0.6 1", "tilted", false, {{0.5, 1}});
+  expect_rgb(v[0].value, {0, 0.6 * (kX0 + 2 * kA + 10), 0}, "back");
+  EXPECT_NEAR(v[0].through_t, 2 * std::sqrt(1 + kA * kA), 1e-5);
+}
+
+// Plastic (black, specular 0.015 below the Fresnel threshold) and mirror: the mirror ray about
+// the tilted normal reaches the ceiling 2 * 2a / (1 - a^2) along x, and rtrace's mirrored length
+// stops at the textured surface (Radiance's rmt = rot).
+TEST_F(TextureBending, PlasticAndMirrorReflection) {
+  double x2 = kX0 + 2 * 2 * kA / (1 - kA * kA);
+  auto p = render("tilt plastic tilted 0 0 5 0 0 0 0.015 0", "tilted", false, {{2, -1}});
+  expect_rgb(p[0].value, {0, 0.015 * (x2 + 10), 0}, "plastic");
+  EXPECT_EQ(p[0].mirror_t, 0);
+  auto q = render("void plastic flat 0 0 5 0 0 0 0.015 0", "flat", false, {{2, -1}});
+  expect_rgb(q[0].value, {0, 0.015 * (kX0 + 10), 0}, "plain plastic");
+  EXPECT_NEAR(q[0].mirror_t, 2, 1e-6);
+  auto m = render("tilt mirror tilted 0 0 3 0.5 0.5 0.5", "tilted", false, {{2, -1}});
+  expect_rgb(m[0].value, {0, 0.5 * (x2 + 10), 0}, "mirror");
+  EXPECT_EQ(m[0].mirror_t, 0);
+}
+
+// Seen from the back (-bv), textured plastic tilts by the flipped perturbation: the mirror ray
+// goes down to the floor at x0 - 2a / (1 - a^2).
+TEST_F(TextureBending, PlasticBack) {
+  double xr = kX0 - 2 * kA / (1 - kA * kA);
+  auto p = render("tilt plastic tilted 0 0 5 0 0 0 0.015 0", "tilted", false, {{0.5, 1}});
+  expect_rgb(p[0].value, {0.015 * (xr + 10), 0, 0}, "plastic back");
+}
