@@ -80,7 +80,12 @@ struct Caster {
 struct PendingRay {
   options::Vec3 org, dir; // dir normalised; zero for a flush request
   double length = 0;      // input direction length (-ld)
+  bool bad = false;       // a NaN or Inf in the ray (or a direction too long to normalise)
 };
+
+bool finite(const options::Vec3& v) {
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
 
 class Tracer {
 public:
@@ -108,7 +113,13 @@ public:
       PendingRay p;
       bool got = reader.read(p.org, p.dir);
       if (got) {
-        p.length = options::normalize_direction(p.dir);
+        // Radiance traces such rays to undefined results (a NaN direction ends its input):
+        // they get an all-zero record instead, so nothing non-finite reaches the output.
+        p.bad = !finite(p.org) || !finite(p.dir);
+        if (!p.bad) {
+          p.length = options::normalize_direction(p.dir);
+          p.bad = !std::isfinite(p.length);
+        }
         batch.push_back(p);
       }
       // Answer what we have when input pauses, a wave is full, or input ends: results reach a
@@ -147,13 +158,15 @@ private:
   std::unique_ptr<Caster> caster_;
   options::RayFlow flow_;
   std::string out_;
+  bool warned_bad_ = false;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 
   // Traces and writes a batch; true when the -x/-y count has been reached.
   bool process(std::vector<PendingRay>& batch) {
     std::vector<render::PrimaryRay> rays;
     for (const PendingRay& p : batch)
-      if (p.length > 0) rays.push_back({p.org, p.dir, opt_.limit_distance ? p.length : 0.0});
+      if (!p.bad && p.length > 0)
+        rays.push_back({p.org, p.dir, opt_.limit_distance ? p.length : 0.0});
     std::vector<render::PrimaryResult> res(rays.size());
     if (!rays.empty()) {
       if (renderer_) {
@@ -166,15 +179,20 @@ private:
     bool stop = false;
     for (const PendingRay& p : batch) {
       bool flush;
-      if (p.length > 0) {
+      if (!p.bad && p.length > 0) {
         write(p, res[k++]);
         flush = flow_.ray_done();
       } else {
         out_.clear();
-        options::append_record(out_, spec_.per_ray, options::RayOutput::empty(p.org, p.dir),
-                               opt_.out_format);
+        options::RayOutput o = p.bad ? options::RayOutput::empty({0, 0, 0}, {0, 0, 0})
+                                     : options::RayOutput::empty(p.org, p.dir);
+        options::append_record(out_, spec_.per_ray, o, opt_.out_format);
         std::fwrite(out_.data(), 1, out_.size(), stdout);
-        flush = flow_.flush_request();
+        flush = p.bad ? flow_.ray_done() : flow_.flush_request();
+        if (p.bad && !warned_bad_) {
+          warning("ray with NaN or infinite numbers, zero output");
+          warned_bad_ = true;
+        }
       }
       if (flush) std::fflush(stdout);
       if (flow_.record_done()) {

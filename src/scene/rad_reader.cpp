@@ -183,7 +183,10 @@ bool Reader::read_arguments(Lexer& lx, Object& o) {
   for (long long i = 0; i < n; ++i) {
     auto w = lx.word();
     if (!w || !detail::is_real_word(*w)) return false;
-    o.fargs.push_back(detail::real_value(*w));
+    // A well-formed word can still overflow to Inf ("1e999"), which Radiance takes as is.
+    double v = detail::real_value(*w);
+    if (!std::isfinite(v)) return false;
+    o.fargs.push_back(v);
   }
   return true;
 }

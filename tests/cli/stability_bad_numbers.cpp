@@ -1,0 +1,244 @@
+// NaN, Inf and denormal numbers in rtrace's ray input and in scene files. Scene numbers that are
+// not finite are fatal; rays holding one get an all-zero record (Radiance traces them to
+// undefined results, and a NaN direction ends its input); nothing non-finite is ever written.
+// Denormals are ordinary numbers.
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "test_env.h"
+
+namespace fs = std::filesystem;
+using radcl::test::run_command;
+
+namespace {
+
+fs::path temp(const std::string& name) {
+  return fs::temp_directory_path() / ("radcl-bad-" + std::to_string(::getpid()) + "-" + name);
+}
+
+void write_file(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+struct Result {
+  int rc;
+  std::string out, log;
+};
+
+// rtrace `opts` `scene` with standard input from a file holding `input`.
+Result rtrace(const std::string& opts, const std::string& scene, const std::string& input) {
+  fs::path in = temp("in"), out = temp("out"), err = temp("err");
+  write_file(in, input);
+  Result r;
+  // In a subshell: run_command's own "2>&1" then cannot take rtrace's stderr.
+  r.rc = run_command("(cd " + radcl::test::data("scenes") + " && " + radcl::test::bin_dir() +
+                     "/rtrace -h " + opts + " " + scene + " < " + in.string() + " > " +
+                     out.string() + " 2> " + err.string() + ")");
+  r.out = read_file(out);
+  r.log = read_file(err);
+  fs::remove(in);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+std::vector<double> words(const std::string& text) {
+  std::istringstream s(text);
+  std::vector<double> v;
+  std::string w;
+  while (s >> w)
+    v.push_back(std::strtod(w.c_str(), nullptr));
+  return v;
+}
+
+template <typename T> std::string binary(const std::vector<T>& v) {
+  return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+template <typename T> std::vector<T> unpack(const std::string& s) {
+  std::vector<T> v(s.size() / sizeof(T));
+  std::memcpy(v.data(), s.data(), v.size() * sizeof(T));
+  return v;
+}
+
+template <typename T> void expect_finite(const std::vector<T>& v, const std::string& what) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    EXPECT_TRUE(std::isfinite(static_cast<double>(v[i]))) << what << " value " << i;
+}
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kDenorm = 1e-310;
+
+// A lit floor under the luminaires: the first ray reads a positive irradiance.
+const std::vector<double> kGood = {2, 2, 0.5, 0, 0, 1};
+
+} // namespace
+
+// Words that are not Radiance reals end ascii input, as in Radiance (fgetword + isflt).
+TEST(StabilityBadNumbers, AsciiNanWordEndsInput) {
+  for (const char* bad : {"nan", "inf", "-inf", "NaN", "infinity"}) {
+    Result r = rtrace("-ab 0 -I -ov", "luminaires.oct",
+                      "2 2 0.5 0 0 1\n2 2 0.5 0 0 " + std::string(bad) + "\n2 2 0.5 0 0 1\n");
+    EXPECT_EQ(r.rc, 0) << r.log;
+    auto v = words(r.out);
+    ASSERT_EQ(v.size(), 3u) << bad << ": " << r.out;
+    EXPECT_GT(v[0], 0);
+  }
+}
+
+// Reals that overflow to Inf ("1e999") are read by atof as in Radiance; such rays give a
+// record of zeros in every field, counted as a ray, and the rays after them go on normally.
+TEST(StabilityBadNumbers, AsciiOverflowGivesZeroRecord) {
+  Result r = rtrace("-ab 0 -I -ovodpn", "luminaires.oct",
+                    "2 2 0.5 0 0 1\n1e999 2 0.5 0 0 1\n2 2 0.5 0 0 -1e999\n2 2 0.5 0 0 1\n");
+  EXPECT_EQ(r.rc, 0) << r.log;
+  EXPECT_NE(r.log.find("rtrace: warning - "), std::string::npos) << r.log;
+  auto v = words(r.out);
+  ASSERT_EQ(v.size(), 4u * 15) << r.out;
+  expect_finite(v, "ascii");
+  for (int k = 15; k < 45; ++k)
+    EXPECT_EQ(v[k], 0.0) << "field " << k;
+  for (int k = 0; k < 15; ++k)
+    EXPECT_EQ(v[k], v[45 + k]) << "field " << k << " of the last ray";
+  EXPECT_GT(v[0], 0);
+}
+
+// Binary float and double input: NaN and Inf in origin or direction give zero records; the
+// -x count includes them.
+TEST(StabilityBadNumbers, BinaryNanInfGiveZeroRecords) {
+  std::vector<std::vector<double>> rays = {kGood,
+                                           {kNaN, 2, 0.5, 0, 0, 1},
+                                           {2, 2, 0.5, 0, 0, kNaN},
+                                           {2, kInf, 0.5, 0, 0, 1},
+                                           {2, 2, 0.5, -kInf, 0, 1},
+                                           {2, 2, 0.5, kNaN, kNaN, kNaN},
+                                           kGood};
+  std::vector<double> d;
+  std::vector<float> f;
+  for (const auto& ray : rays)
+    for (double x : ray) {
+      d.push_back(x);
+      f.push_back(static_cast<float>(x));
+    }
+  for (char fmt : {'f', 'd'}) {
+    std::string opts = std::string("-ab 0 -I -x 7 -y 0 -f") + fmt + fmt + " -ovodpn";
+    Result r = rtrace(opts, "luminaires.oct", fmt == 'f' ? binary(f) : binary(d));
+    EXPECT_EQ(r.rc, 0) << r.log;
+    std::vector<double> v;
+    if (fmt == 'f')
+      for (float x : unpack<float>(r.out))
+        v.push_back(x);
+    else
+      v = unpack<double>(r.out);
+    ASSERT_EQ(v.size(), 7u * 15) << fmt;
+    expect_finite(v, std::string(1, fmt));
+    for (int k = 15; k < 6 * 15; ++k)
+      EXPECT_EQ(v[k], 0.0) << fmt << " field " << k;
+    EXPECT_GT(v[0], 0) << fmt;
+    for (int k = 0; k < 15; ++k)
+      EXPECT_EQ(v[k], v[6 * 15 + k]) << fmt << " field " << k;
+  }
+}
+
+// Shading paths too (-ab 1, not -I; a ray into the sky): nothing non-finite.
+TEST(StabilityBadNumbers, ShadedBadRaysStayFinite) {
+  std::vector<double> d = {kNaN, kNaN, kNaN, 0, 0, 1,   2, 2, 0.5,
+                           kInf, kInf, kInf, 2, 2, 0.5, 0, 0, -1};
+  Result r = rtrace("-ab 1 -ad 16 -fdd -ov", "luminaires.oct", binary(d));
+  EXPECT_EQ(r.rc, 0) << r.log;
+  auto v = unpack<double>(r.out);
+  ASSERT_EQ(v.size(), 9u);
+  expect_finite(v, "shaded");
+  for (int k = 0; k < 6; ++k)
+    EXPECT_EQ(v[k], 0.0);
+}
+
+// Denormal numbers are ordinary: in an origin they move nothing visible; a direction whose
+// squared length underflows is a zero vector (a flush request, as in Radiance); denormal parts
+// of a real direction do nothing.
+TEST(StabilityBadNumbers, DenormalsWorkNormally) {
+  std::vector<double> d = {
+      2, 2, 0.5,     0,       0,       1, // reference
+      2, 2, 0.5,     kDenorm, kDenorm, 1, // denormal parts of a real direction
+      2, 2, kDenorm, 0,       0,       1, // denormal origin ...
+      2, 2, 0,       0,       0,       1, // ... reads as zero does
+      2, 2, 0.5,     kDenorm, 0,       0, // squared length underflows: flush request
+  };
+  Result r = rtrace("-ab 0 -I -fdd -ov", "luminaires.oct", binary(d));
+  EXPECT_EQ(r.rc, 0) << r.log;
+  auto v = unpack<double>(r.out);
+  ASSERT_EQ(v.size(), 15u);
+  expect_finite(v, "denormal");
+  EXPECT_GT(v[0], 0);
+  EXPECT_GT(v[6], 0);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(v[3 + k], v[k]) << "denormal direction parts";
+    EXPECT_EQ(v[6 + k], v[9 + k]) << "denormal origin";
+    EXPECT_EQ(v[12 + k], 0.0) << "underflowing direction";
+  }
+}
+
+namespace {
+
+const char* kRoom = "void light lamp 0 0 3 10 10 10\n"
+                    "lamp sphere bulb 0 0 4 0 0 2 0.2\n"
+                    "void plastic grey 0 0 5 .5 .5 .5 0 0\n";
+
+// rtrace on a scene of kRoom plus `extra`: a fatal error naming the object, and no output.
+void expect_fatal(const std::string& extra, const std::string& object) {
+  fs::path rad = temp("scene.rad");
+  write_file(rad, std::string(kRoom) + extra);
+  Result r = rtrace("-ab 0 -ov", rad.string(), "0 0 0 0 0 1\n");
+  fs::remove(rad);
+  EXPECT_NE(r.rc, 0) << extra;
+  EXPECT_NE(r.log.find("rtrace: fatal - "), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("bad arguments for " + object), std::string::npos) << r.log;
+  EXPECT_EQ(r.out, "") << extra;
+}
+
+} // namespace
+
+TEST(StabilityBadNumbers, SceneNanInfAreFatal) {
+  for (const char* v : {"nan", "inf", "-inf", "1e999", "-1e400"}) {
+    std::string x(v);
+    expect_fatal("grey sphere ball 0 0 4 1 1 0 " + x + "\n", "sphere \"ball\"");
+    expect_fatal("grey sphere ball 0 0 4 " + x + " 1 0 0.5\n", "sphere \"ball\"");
+    expect_fatal("grey polygon floor 0 0 12 -5 -5 0 5 -5 0 5 " + x + " 0 -5 5 0\n",
+                 "polygon \"floor\"");
+    expect_fatal("void light hot 0 0 3 " + x + " 1 1\n", "light \"hot\"");
+    expect_fatal("void plastic odd 0 0 5 .5 .5 .5 " + x + " 0\n", "plastic \"odd\"");
+  }
+}
+
+// Denormal scene numbers are accepted and behave as the numbers they are.
+TEST(StabilityBadNumbers, SceneDenormalsWork) {
+  auto floor = [](const std::string& z) {
+    fs::path rad = temp("floor.rad");
+    write_file(rad, std::string(kRoom) + "grey polygon floor 0 0 12 -5 -5 " + z + " 5 -5 " + z +
+                        " 5 5 " + z + " -5 5 " + z + "\n");
+    Result r = rtrace("-ab 0 -ov", rad.string(), "0 0 1 0 0 -1\n");
+    fs::remove(rad);
+    EXPECT_EQ(r.rc, 0) << r.log;
+    return words(r.out);
+  };
+  auto zero = floor("0"), denorm = floor("1e-310");
+  ASSERT_EQ(zero.size(), 3u);
+  ASSERT_EQ(denorm.size(), 3u);
+  EXPECT_GT(zero[0], 0);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(denorm[k], zero[k], 1e-6 * zero[k]);
+}
