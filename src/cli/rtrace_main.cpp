@@ -159,14 +159,19 @@ private:
   options::RayFlow flow_;
   std::string out_;
   bool warned_bad_ = false;
+  std::uint32_t next_id_ = 0; // rays read so far (keys the random numbers)
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 
   // Traces and writes a batch; true when the -x/-y count has been reached.
   bool process(std::vector<PendingRay>& batch) {
     std::vector<render::PrimaryRay> rays;
-    for (const PendingRay& p : batch)
+    // Each ray's random numbers are keyed by its place in the whole input, not in its batch,
+    // so results do not depend on where the input paused.
+    for (const PendingRay& p : batch) {
+      const std::uint32_t id = next_id_++;
       if (!p.bad && p.length > 0)
-        rays.push_back({p.org, p.dir, opt_.limit_distance ? p.length : 0.0});
+        rays.push_back({p.org, p.dir, opt_.limit_distance ? p.length : 0.0, id});
+    }
     std::vector<render::PrimaryResult> res(rays.size());
     if (!rays.empty()) {
       if (renderer_) {

@@ -109,7 +109,14 @@ TEST(StabilityDeterminism, RtraceSplitInputDirect) {
   expect_split_input_same("-ab 0 -dj 0.7", "office_clear.oct", "office_grid.pts", 20);
 }
 
-TEST(StabilityDeterminism, DISABLED_RtraceSplitInputAmbient) {
+// Random numbers are keyed by a ray's place in the whole input (it was its place in the batch,
+// so a pause in the input changed every later ray's noise).
+TEST(StabilityDeterminism, RtraceSplitInputAmbient) {
   expect_split_input_same("-ab 1 -aa 0 -ad 64 -as 32", "office_clear.oct", "office_grid.pts", 20);
+}
+
+// Known gap: while the cache is built, a batch's records are made from its own misses, so a
+// pause in the input (a smaller batch) changes which records exist and the later values.
+TEST(StabilityDeterminism, DISABLED_RtraceSplitInputBuildingCache) {
   expect_split_input_same("-ab 2 -aa 0.15 -ad 128 -as 32", "sphere.oct", "sphere_wall.pts", 8);
 }
