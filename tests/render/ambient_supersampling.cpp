@@ -93,8 +93,9 @@ rc_ray ray_with(std::uint32_t tally, float coef) {
 // The tree on its own: one 8 x 8 hemisphere whose divisions are dark except one bright one.
 // The budget goes to the bright division and its neighbours, all of it is spent, and the
 // hemisphere's value is the sum of the divisions' averages.
-TEST(AmbientSupersampling, TreeSpendsBudgetWhereDivisionsDiffer) {
-  render::TallyTree t;
+// One primary (its own contribution `own`) with an 8 x 8 hemisphere of budget 100 whose
+// divisions' first samples have the values `value(c)`.
+template <class F> void hemisphere(render::TallyTree& t, float own, F value) {
   t.reset(1, 0);
   rc_ray primary = ray_with(0, 1);
   const std::uint32_t ns = 8, budget = 100;
@@ -103,12 +104,17 @@ TEST(AmbientSupersampling, TreeSpendsBudgetWhereDivisionsDiffer) {
     kids[c] = ray_with(0, 0.5f / (ns * ns));
     kids[c].cell = RC_CELL_FLAG | (budget << 16) | c;
   }
-  t.shaded(primary, rc_hit{}, rc_float4{0.25f, 0.25f, 0.25f, 0}, kids.data(), kids.size());
-  const std::uint32_t bright = 3 * ns + 4;
+  t.shaded(primary, rc_hit{}, rc_float4{own, own, own, 0}, kids.data(), kids.size());
   for (std::uint32_t c = 0; c < ns * ns; ++c) {
-    float v = c == bright ? 1.0f : 0.01f;
+    float v = value(c);
     t.shaded(kids[c], rc_hit{}, rc_float4{v, v, v, 0}, nullptr, 0);
   }
+}
+
+TEST(AmbientSupersampling, TreeSpendsBudgetWhereDivisionsDiffer) {
+  render::TallyTree t;
+  const std::uint32_t ns = 8, budget = 100, bright = 3 * ns + 4;
+  hemisphere(t, 0.25f, [&](std::uint32_t c) { return c == bright ? 1.0f : 0.01f; });
   auto req = t.take_requests();
   ASSERT_EQ(req.size(), 1u);
   std::uint32_t total = 0, near = 0;
@@ -158,19 +164,9 @@ TEST(AmbientSupersampling, IndependentOfWaveSize) {
 // variance estimate divides 0 by 0 there): no request, the first samples are the answer.
 TEST(AmbientSupersampling, TreeSkipsHemisphereWithBlackNeighbours) {
   render::TallyTree t;
-  t.reset(1, 0);
-  rc_ray primary = ray_with(0, 1);
-  const std::uint32_t ns = 8, budget = 100;
-  std::vector<rc_ray> kids(ns * ns);
-  for (std::uint32_t c = 0; c < ns * ns; ++c) {
-    kids[c] = ray_with(0, 0.5f / (ns * ns));
-    kids[c].cell = RC_CELL_FLAG | (budget << 16) | c;
-  }
-  t.shaded(primary, rc_hit{}, rc_float4{0, 0, 0, 0}, kids.data(), kids.size());
-  for (std::uint32_t c = 0; c < ns * ns; ++c) {
-    float v = c == 27 ? 1.0f : (c == 0 || c == 1) ? 0.0f : 0.01f;
-    t.shaded(kids[c], rc_hit{}, rc_float4{v, v, v, 0}, nullptr, 0);
-  }
+  hemisphere(t, 0.0f, [](std::uint32_t c) {
+    return c == 27 ? 1.0f : (c == 0 || c == 1) ? 0.0f : 0.01f;
+  });
   EXPECT_TRUE(t.take_requests().empty());
   EXPECT_NEAR(t.sum(0)[0], 1.0f + 61 * 0.01f, 1e-6);
 }

@@ -18,6 +18,7 @@
 #include "radcl/render/renderer.h"
 #include "radcl/scene/rad_reader.h"
 #include "radcl/util/error.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -52,25 +53,16 @@ struct Ray {
   Vec org, dir;
 };
 
-class FuncMaterials : public ::testing::Test {
+class FuncMaterials : public test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   render::RenderSettings st;
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_func_materials_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    test::SceneDir::SetUp();
     std::ofstream(dir / "f.cal") << kCal;
     fs::copy_file(test::data("render/brdf_dz.dat"), dir / "brdf_dz.dat");
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
     st.ab = 0;
     st.dj = 0;
     st.dt = 0;
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
   }
   // Renders `rays` in a scene of a sun in direction `sun`, `rest`, and (if `floor` names a
   // material) the floor made of it.
@@ -82,15 +74,11 @@ protected:
       << rest << "\n";
     if (!floor.empty()) f << floor << " polygon floor 0 0 12 -20 -20 0 20 -20 0 20 20 0 -20 20 0\n";
     f.close();
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
-    render::Renderer r(ls, st, device::default_context());
     std::vector<render::PrimaryRay> pr;
     for (const Ray& ray : rays)
       pr.push_back({ray.org, ray.dir, 0});
-    std::vector<render::PrimaryResult> res(pr.size());
-    r.render(pr, res);
     std::vector<Rgb> out;
-    for (const auto& x : res)
+    for (const auto& x : render_rays("scene.rad", pr, st))
       out.push_back(x.value);
     return out;
   }

@@ -16,6 +16,7 @@
 
 #include "radcl/device/context.h"
 #include "radcl/render/renderer.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -57,24 +58,15 @@ std::array<double, 3> dielectric_rt(double r, double c) {
   return {refl, (1 - refl) * r * r, cos2};
 }
 
-class TextureBending : public ::testing::Test {
+class TextureBending : public test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   render::RenderSettings st;
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_texture_bending_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    test::SceneDir::SetUp();
     std::ofstream(dir / "pos.cal") << "at = Px + 10;\n";
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
     st.ab = 0;
     st.dj = 0;
     st.dt = 0;
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
   }
   // The backdrop (unless `bare`), `rest`, and a surface at z = 1 (normal +z, or -z when
   // `down`) made of `mod`; rays from (kX0, kY0, z) along (0, 0, dz).
@@ -95,14 +87,10 @@ protected:
     else
       f << mod << " polygon pane 0 0 12 -20 -20 1 20 -20 1 20 20 1 -20 20 1\n";
     f.close();
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
-    render::Renderer r(ls, st, device::default_context());
     std::vector<render::PrimaryRay> pr;
     for (const auto& z : zs)
       pr.push_back({{kX0, kY0, z[0]}, {0, 0, z[1]}, 0});
-    std::vector<render::PrimaryResult> res(pr.size());
-    r.render(pr, res);
-    return res;
+    return render_rays("scene.rad", pr, st);
   }
 };
 

@@ -18,6 +18,7 @@
 #include "radcl/device/context.h"
 #include "radcl/render/ambient_cache.h"
 #include "radcl/render/renderer.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -50,20 +51,11 @@ struct Ray {
   std::array<double, 3> org, dir;
 };
 
-class RayDistance : public ::testing::Test {
+class RayDistance : public test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_raydist_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    test::SceneDir::SetUp();
     std::ofstream(dir / "t.cal") << kCal;
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
   }
   // Red channel of each ray's radiance in `scene`.
   static render::RenderSettings settings(bool bv = true) {
@@ -82,15 +74,11 @@ protected:
   std::vector<double> render(const std::string& scene, const std::vector<Ray>& rays,
                              const render::RenderSettings& st) {
     std::ofstream(dir / "scene.rad", std::ios::trunc) << scene;
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
-    render::Renderer r(ls, st, device::default_context());
     std::vector<render::PrimaryRay> pr;
     for (const Ray& ray : rays)
       pr.push_back({ray.org, ray.dir, 0});
-    std::vector<render::PrimaryResult> res(pr.size());
-    r.render(pr, res);
     std::vector<double> out;
-    for (const auto& v : res)
+    for (const auto& v : render_rays("scene.rad", pr, st))
       out.push_back(v.value[0]);
     return out;
   }

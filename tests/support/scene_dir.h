@@ -1,0 +1,50 @@
+// Render tests that write their own small scenes: a fixture that moves the current directory
+// into a fresh temporary folder for each test (Radiance finds files through RAYPATH's "."),
+// and a render of primary rays through a scene file there.
+#pragma once
+
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "radcl/device/context.h"
+#include "radcl/render/renderer.h"
+#include "radcl/scene/loader.h"
+
+namespace radcl::test {
+
+class SceneDir : public ::testing::Test {
+protected:
+  std::filesystem::path dir;
+
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir = std::filesystem::temp_directory_path() /
+          ("radcl_" + std::string(info->test_suite_name()) + "_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    ASSERT_NE(getcwd(cwd_, sizeof cwd_), nullptr);
+    ASSERT_EQ(chdir(dir.c_str()), 0);
+  }
+  void TearDown() override {
+    EXPECT_EQ(chdir(cwd_), 0);
+    std::filesystem::remove_all(dir);
+  }
+
+  // The results of `rays` through scene file `file` (in the folder) with settings `st`.
+  static std::vector<render::PrimaryResult> render_rays(const std::string& file,
+                                                        const std::vector<render::PrimaryRay>& rays,
+                                                        const render::RenderSettings& st) {
+    scene::LoadedScene ls = scene::load_scene({file});
+    render::Renderer r(ls, st, device::default_context());
+    std::vector<render::PrimaryResult> res(rays.size());
+    r.render(rays, res);
+    return res;
+  }
+
+private:
+  char cwd_[4096];
+};
+
+} // namespace radcl::test
