@@ -226,8 +226,6 @@ private:
   std::unique_ptr<std::istream> in_;
   bool common_written_ = false;
 
-  // Radiance's nextview(): the next view line of standard input changes the current view (the
-  // one before it becomes the previous view, for -pm). False at the end of the input.
   // The overture (rad's low-resolution rpict run that only fills the ambient file): before a
   // frame whose cache radcl builds, the view at an eighth of its resolution is rendered and
   // discarded, so the cache's records are spread over the whole view in large batches before
@@ -249,6 +247,8 @@ private:
     });
   }
 
+  // Radiance's nextview(): the next view line of standard input changes the current view (the
+  // one before it becomes the previous view, for -pm). False at the end of the input.
   bool next_view() {
     last_ = view_;
     have_last_ = true;
