@@ -8,17 +8,25 @@
  * Differences from Radiance: every accepted record is summed (Radiance's octree stops early
  * in a node whose children already weigh 0.05), the maximum angle is narrowed for low-weight
  * rays whenever the ray's weight is below 0.6 (Radiance looks at the first record of each
- * octree node), and the corral bits' light-leak test (a shadow ray per record) is not made. */
+ * octree node). The corral bits' light-leak test is the host's (render/ambient_leaks.h): the
+ * records whose test ray it found blocked at this hit come in `blocked` ([count, index...]). */
 
 /* Radiance's tfunc(x0, x, 0): a hat falling from 1 at 0 to 0 at x0. */
 static inline float rc_amb_hat(float x0, float x) {
   return 1.0f - x / x0;
 }
 
+static int rc_amb_leaks(global const uint* blocked, uint k) {
+  if (!blocked) return 0;
+  for (uint i = 1u; i <= blocked[0]; ++i)
+    if (blocked[i] == k) return 1;
+  return 0;
+}
+
 /* Sum of the weighted, extrapolated values at p (normal n, ambient level al, ray weight rw)
  * into *acol; returns the sum of weights (0: no record applies). */
 static float rc_amb_lookup(const rc_scene_args* S, float3 p, float3 n, uint al, float rw,
-                           float3* acol) {
+                           global const uint* blocked, float3* acol) {
   const float aa = S->params.amb.x, minarad = S->params.amb.y;
   const uint nnodes = (uint)S->params.amb.z;
   float maxangle = 10.0f * M_PI_F / 180.0f + aa;
@@ -43,7 +51,9 @@ static float rc_amb_lookup(const rc_scene_args* S, float3 p, float3 n, uint al, 
       float3 an = a->nrm.xyz;
       float d = dot(an, n);
       if (d <= 0.0f) continue;
-      float dr2 = 2.0f - 2.0f * d;
+      /* Unit normals met exactly (a record made at this very point) can give d a rounding
+       * above 1: a negative dr2 would make the weight NaN and lose every record here. */
+      float dr2 = fmax(2.0f - 2.0f * d, 0.0f);
       if (dr2 >= maxangle * maxangle) continue;
       float3 ck = p - a->pos.xyz;
       d = dot(ck, an);
@@ -55,6 +65,7 @@ static float rc_amb_lookup(const rc_scene_args* S, float3 p, float3 n, uint al, 
       float cu = dot(ck, u), cv = dot(ck, v);
       dt2 += (cu / a->nrm.w) * (cu / a->nrm.w) + (cv / a->udir.w) * (cv / a->udir.w);
       if (dt2 >= aa * aa) continue;
+      if (rc_amb_leaks(blocked, k)) continue; /* a light leak: Radiance's plugaleak */
       /* extambient: first-order change with position and with the normal's rotation. */
       float e = 1.0f + dot(ck, a->grad.x * u + a->grad.y * v) +
                 dot(cross(an, n), a->grad.z * u + a->grad.w * v);

@@ -66,6 +66,7 @@ typedef struct rc_scene_args {
   global const rc_pattern* patterns;
   global const rc_amb_record* amb_records;
   global const rc_amb_node* amb_nodes;
+  global const uint* amb_blocked; /* per-hit lists of records whose leak test failed */
   rc_params params; /* a private copy: read on every sample */
 } rc_scene_args;
 
@@ -101,6 +102,8 @@ typedef struct rc_out {
   int side;     /* and by how much: +1 through the front, -1 through the back */
   float dist;   /* length of the ray tree up to this hit (the ray's dist0 + t): where its
                    children and shadow rays start (rc_ray.dist0) */
+  /* Cache records the host's leak tests rule out at this hit: [count, index...], or null. */
+  global const uint* blocked;
 } rc_out;
 
 static inline void rc_out_init(rc_out* o, int write) {
@@ -111,6 +114,7 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->cext = (float3)(0.0f);
   o->wfac = 1.0f;
   o->super = 0;
+  o->blocked = 0;
   o->nhemi = 0;
   o->child = 0;
   o->pcol = (float3)(1.0f);
@@ -287,7 +291,7 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
    * make a record for is sampled as with -aa 0. */
   if (P->amb.z > 0.0f || P->amb.w > 0.0f) {
     float3 acol;
-    float wsum = rc_amb_lookup(S, p, n, r->ambient_depth, r->coef.w, &acol);
+    float wsum = rc_amb_lookup(S, p, n, r->ambient_depth, r->coef.w, o->blocked, &acol);
     if (wsum > RC_FTINY) {
       float3 v = acol / wsum * acoef;
       o->immediate += v * r->coef.xyz;
@@ -296,6 +300,12 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
     /* While the host builds the cache, a miss becomes a record request; the ray's value is
      * then incomplete and the host shades it again once records cover the point. */
     if (P->amb.w > 0.0f) {
+      /* No record can be made where every sample ray would fall below -lw or past -lr (the
+       * host's sample_hemispheres): Radiance's makeambient fails there and takes -av. */
+      if (0.5f * r->coef.w < P->av.w || (P->lr > 0 && (int)r->depth + 1 > P->lr)) {
+        o->immediate += P->av.xyz * acoef * r->coef.xyz;
+        return P->av.xyz * acoef;
+      }
       if (!o->super)
         rc_emit_ray(o, r, p, n, acoef, RC_RAY_AMBMISS, 0.0f, r->coef.w, r->depth, r->ambient_depth);
       return (float3)(0.0f);
@@ -756,6 +766,9 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   h.uv.z = r.dist0;
   h.uv.w = 0.0f;
   o->dist = r.dist0 + fmax(h.pos.w, 0.0f);
+  /* The host writes a hit's list of leaking records into nrm.w's bits (1 + its offset). */
+  uint leaks = as_uint(h.nrm.w);
+  if (leaks != 0u) o->blocked = S->amb_blocked + (leaks - 1u);
 
   if (h.surface == RC_SURF_IRRADIANCE) { /* -I measurement point */
     rc_material m = S->materials[P->irradiance_material];
@@ -806,7 +819,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
       global const float *args, global const rc_source *sources, global const float4 *verts,       \
       global const rc_mirror *mirrors, global const rc_params *params,                             \
       global const rc_pattern *patterns, global const rc_amb_record *amb_records,                  \
-      global const rc_amb_node *amb_nodes
+      global const rc_amb_node *amb_nodes, global const uint *amb_blocked
 
 #define RC_SCENE_INIT                                                                              \
   rc_scene_args S;                                                                                 \
@@ -819,6 +832,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   S.patterns = patterns;                                                                           \
   S.amb_records = amb_records;                                                                     \
   S.amb_nodes = amb_nodes;                                                                         \
+  S.amb_blocked = amb_blocked;                                                                     \
   S.params = *params;
 
 kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,

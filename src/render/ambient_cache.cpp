@@ -53,7 +53,9 @@ rc_float4 f4(double x, double y, double z, double w) {
 
 class Flattener {
 public:
-  Flattener(const std::vector<rc_amb_record>& in, AmbientCacheBuffers& out) : in_(in), out_(out) {}
+  Flattener(const std::vector<rc_amb_record>& in, const std::vector<std::uint32_t>& corral,
+            AmbientCacheBuffers& out)
+      : in_(in), corral_(corral), out_(out) {}
 
   // Appends `node` (whose box is `box`) and its subtree.
   void add(const Node* node, const RTCBounds& box) {
@@ -66,8 +68,10 @@ public:
       const Leaf* l = static_cast<const Leaf*>(node);
       out_.nodes[at].first = static_cast<std::uint32_t>(out_.records.size());
       out_.nodes[at].count = l->n;
-      for (unsigned i = 0; i < l->n; ++i)
+      for (unsigned i = 0; i < l->n; ++i) {
         out_.records.push_back(in_[l->ids[i]]);
+        out_.corral.push_back(corral_[l->ids[i]]);
+      }
     } else {
       const Inner* in = static_cast<const Inner*>(node);
       for (int k = 0; k < 2; ++k)
@@ -78,6 +82,7 @@ public:
 
 private:
   const std::vector<rc_amb_record>& in_;
+  const std::vector<std::uint32_t>& corral_;
   AmbientCacheBuffers& out_;
 };
 
@@ -98,6 +103,7 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
                                         const std::array<double, 3>& centre, double aa) {
   AmbientCacheBuffers out;
   std::vector<rc_amb_record> recs;
+  std::vector<std::uint32_t> corral;
   std::vector<RTCBuildPrimitive> prims;
   for (const ambient::AmbientRecord& r : records) {
     if (!(r.rad[0] > 0) || !(r.rad[1] > 0)) continue;
@@ -129,6 +135,7 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
     b.primID = static_cast<unsigned>(recs.size());
     prims.push_back(b);
     recs.push_back(a);
+    corral.push_back(r.corral);
   }
   if (recs.empty()) return out;
 
@@ -173,7 +180,8 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
     throw FatalError("cannot build the ambient cache's BVH");
   }
   out.records.reserve(recs.size());
-  Flattener(recs, out).add(static_cast<const Node*>(root), all);
+  out.corral.reserve(recs.size());
+  Flattener(recs, corral, out).add(static_cast<const Node*>(root), all);
   rtcReleaseBVH(bvh);
   rtcReleaseDevice(dev);
   if (out.records.size() != recs.size())

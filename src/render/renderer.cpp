@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <set>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -15,11 +17,15 @@
 #include "radcl/device/context.h"
 #include "radcl/device/program.h"
 #include "radcl/render/ambient_cache.h"
+#include "radcl/render/ambient_leaks.h"
 #include "radcl/render/ambient_record.h"
 #include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
 #include "radcl/rng.h"
 #include "radcl/util/error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace radcl::render {
 
@@ -89,9 +95,9 @@ struct Renderer::Impl {
   device::Program program;
   device::Kernel count, shade, accumulate, shadow_step;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
-  device::Buffer amb_records, amb_nodes;
+  device::Buffer amb_records, amb_nodes, amb_blocked;
   // Kernel arguments set_scene_args() fills; a kernel's next argument follows them.
-  static constexpr unsigned kSceneArgs = 10;
+  static constexpr unsigned kSceneArgs = 11;
   Vec3d centre;
   RenderStats stats;
   // -as: hemisphere samples tally per division until the super-samples are decided.
@@ -143,6 +149,7 @@ struct Renderer::Impl {
         shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
         materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
         patterns(upload(c, cs.patterns)), centre(geom.centre()) {
+    amb_blocked = device::Buffer(c, 16);
     if (st.ambient_list != RenderSettings::AmbientList::None) {
       mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
                         st.ambient_names);
@@ -210,10 +217,24 @@ struct Renderer::Impl {
   std::uint32_t next_sample_id = 0x40000000u;
   std::unique_ptr<RecordMaker> maker; // the record kernel, built when first needed
 
+  // The cache as uploaded (the leak tests walk it on the host) and its leak tester.
+  AmbientCacheBuffers cache;
+  LeakTester leak_tester;
+  // The current render_batch's lists of records whose leak test failed, per hit: [count,
+  // index...]; a hit names its list in nrm.w (docs/ambient.md).
+  std::vector<std::uint32_t> leak_lists{0};
+  std::size_t leak_uploaded = 0;
+
   void upload_cache() {
-    AmbientCacheBuffers cache;
+    cache = AmbientCacheBuffers{};
     if (uses_cache(settings))
       cache = build_ambient_cache(cache_records, geom.centre(), settings.aa);
+    // RADCL_LEAK_TEST=0 leaves the leak test out (to measure what it costs and changes).
+    const char* lt = std::getenv("RADCL_LEAK_TEST");
+    leak_tester = lt && std::string(lt) == "0"
+                      ? LeakTester()
+                      : LeakTester(&cache, static_cast<float>(settings.aa),
+                                   static_cast<float>(settings.ambient_min_radius));
     base.amb.z = static_cast<float>(cache.nodes.size());
     if (settings.aw > 0 && uses_cache(settings)) {
       auto v = averaged_ambient_value({settings.av[0], settings.av[1], settings.av[2]}, settings.aw,
@@ -440,7 +461,7 @@ struct Renderer::Impl {
     for (const rc_ray* m : chosen) {
       const double wt = ambient_record_weight(static_cast<int>(m->ambient_depth), m->coef.w);
       const float sw = static_cast<float>(kAvgRefl * m->coef.w);
-      if (sw < settings.lw) continue; // Radiance's rayorigin refuses every sample
+      if (sw < static_cast<float>(settings.lw)) continue; // rayorigin refuses every sample
       if (settings.lr > 0 && static_cast<int>(m->depth) + 1 > settings.lr) continue;
       const int ns = std::max(7, static_cast<int>(std::sqrt(settings.ad * wt) + 0.5));
       const Vec3d n = {m->dir.x, m->dir.y, m->dir.z};
@@ -554,7 +575,8 @@ struct Renderer::Impl {
         .arg(first + 6, params)
         .arg(first + 7, patterns)
         .arg(first + 8, amb_records)
-        .arg(first + 9, amb_nodes);
+        .arg(first + 9, amb_nodes)
+        .arg(first + 10, amb_blocked);
   }
 
   // One launch of rc_shade over `n` rays: per ray, its output offsets (or, with caps, where the
@@ -647,6 +669,8 @@ struct Renderer::Impl {
       }
     std::vector<rc_ray> queue(prim.size());
     std::vector<rc_hit> hits;
+    leak_lists.assign(1, 0u);
+    leak_uploaded = 0;
     std::vector<Vec3d> sums(prim.size(), Vec3d{0, 0, 0});
     std::vector<Vec3d> mirror_sums(prim.size(), Vec3d{0, 0, 0});
     mirrored = &mirror_sums;
@@ -700,6 +724,7 @@ struct Renderer::Impl {
       if (!(first_wave && settings.irradiance_I && nesting == 0))
         trace(queue, hits, res, first_wave);
       first_wave = false;
+      test_leaks(queue, hits);
 
       // Shade in slices whose slots fit a modest allocation (a slice keeps queue order, so
       // sums stay in order).
@@ -1017,6 +1042,77 @@ struct Renderer::Impl {
   }
 
   // Embree over the wave; depth-0 hits also fill the primaries' geometric results.
+  // Radiance's leak test for the cache records a wave's lookups may use (render/ambient_leaks.h):
+  // per hit on a surface that may look the cache up, the corral-marked records the kernel could
+  // accept there are tested by a short ray; the blocked ones are listed for the kernel.
+  void test_leaks(const std::vector<rc_ray>& queue, std::vector<rc_hit>& hits) {
+    if (!leak_tester.active()) return;
+    const std::size_t n = queue.size();
+    const double eps = ray_eps;
+    auto segment_blocked = [&](const std::array<double, 3>& o, const std::array<double, 3>& d,
+                               double tmax) {
+      Vec3d org = {o[0] + centre[0], o[1] + centre[1], o[2] + centre[2]};
+      const Vec3d dir = {d[0], d[1], d[2]};
+      double t0 = eps;
+      for (int k = 0; k < 64; ++k) { // void surfaces are passed, as Radiance passes them
+        std::optional<geometry::Hit> h = geom.intersect(org, dir, t0, tmax);
+        if (!h) return false;
+        const std::uint32_t s = cs.surface_of(*h);
+        if (s < cs.surfaces.size() && cs.surfaces[s].material != RC_NONE) return true;
+        t0 = h->t + eps;
+      }
+      return true;
+    };
+    constexpr std::size_t kGrain = 256;
+    const std::size_t nchunks = (n + kGrain - 1) / kGrain;
+    std::vector<std::vector<std::uint32_t>> lists(nchunks);
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> at(nchunks);
+    std::vector<std::size_t> traced(nchunks, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nchunks), [&](const auto& range) {
+      std::vector<std::uint32_t> found;
+      for (std::size_t c = range.begin(); c != range.end(); ++c)
+        for (std::size_t i = c * kGrain; i < std::min(n, (c + 1) * kGrain); ++i) {
+          const rc_ray& r = queue[i];
+          const rc_hit& h = hits[i];
+          if (static_cast<int>(r.ambient_depth) >= settings.ab) continue;
+          if (h.surface != RC_SURF_IRRADIANCE) {
+            if (h.surface >= cs.surfaces.size() || h.pos.w < 0) continue;
+            const rc_surface& sf = cs.surfaces[h.surface];
+            if (sf.material == RC_NONE || sf.source != RC_NONE || (sf.flags & RC_SURFF_NO_AMBIENT))
+              continue;
+          }
+          LeakLookup q;
+          q.point = {h.pos.x, h.pos.y, h.pos.z};
+          // The normal facing the ray (a -I meter faces its given direction).
+          const double f = h.surface == RC_SURF_IRRADIANCE || h.front ? 1.0 : -1.0;
+          q.normal = {f * h.nrm.x, f * h.nrm.y, f * h.nrm.z};
+          q.level = r.ambient_depth;
+          q.weight = r.coef.w;
+          found.clear();
+          traced[c] += leak_tester.find(q, segment_blocked, found);
+          if (found.empty()) continue;
+          at[c].push_back(
+              {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(lists[c].size())});
+          lists[c].push_back(static_cast<std::uint32_t>(found.size()));
+          lists[c].insert(lists[c].end(), found.begin(), found.end());
+        }
+    });
+    for (std::size_t c = 0; c < nchunks; ++c) {
+      stats.leak_tests += traced[c];
+      const std::uint32_t base_off = static_cast<std::uint32_t>(leak_lists.size());
+      for (const auto& [i, off] : at[c]) {
+        const std::uint32_t code = base_off + off + 1; // 0: no list
+        std::memcpy(&hits[i].nrm.w, &code, sizeof code);
+        ++stats.leaks;
+      }
+      leak_lists.insert(leak_lists.end(), lists[c].begin(), lists[c].end());
+    }
+    if (leak_lists.size() != leak_uploaded) {
+      amb_blocked = upload(ctx, leak_lists);
+      leak_uploaded = leak_lists.size();
+    }
+  }
+
   void trace(const std::vector<rc_ray>& queue, std::vector<rc_hit>& hits,
              std::span<PrimaryResult> res, bool primaries) {
     std::size_t n = queue.size();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -15,6 +16,7 @@ namespace radcl::render {
 struct AmbientCacheBuffers {
   std::vector<rc_amb_record> records; // in leaf order
   std::vector<rc_amb_node> nodes;     // depth first; empty when there are no records
+  std::vector<std::uint32_t> corral;  // each record's corral bits, in leaf order (host only)
 };
 
 // `centre`: the scene's re-centring origin; `aa`: -aa (a record covers points within aa times
