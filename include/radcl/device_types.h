@@ -74,6 +74,10 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
  * mirrored length (-o l, L) stops at the surface, as Radiance's rmt there. */
 #define RC_RAY_TILTED 128u
 
+/* rc_ray.org.w / rc_shadow.org.w of a ray whose origin was moved off the surface it leaves
+ * (rc_leave): traced with no minimum distance, so that nothing near the point is skipped. */
+#define RC_TMIN_OFF (-1.0f)
+
 /* One ray of a wave. org.w = tmin, dir.w = tmax; coef.xyz is the accumulated coefficient
  * (product of material coefficients down the tree), coef.w the scalar ray weight that -lw cuts. */
 typedef struct rc_ray {

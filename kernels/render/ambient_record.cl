@@ -218,7 +218,7 @@ static int rc_amr_full(const rc_amb_hemi* hp, global const rc_amb_sample* s, flo
   const float minarad = hp->nrm.w, maxarad = hp->ux.w, aa = hp->uy.w, wt = hp->pos.w;
   rc_amr_frame f = {hp->pos.xyz, hp->ux.xyz, hp->uy.xyz, hp->nrm.xyz};
   /* Relative brightness: Y = 0.99 L / mean + 0.01. A black hemisphere falls back on the
-   * geometric Hessian (Y = 1 everywhere), with no gradients and no corral. */
+   * geometric Hessian (Y = 1 everywhere), with no gradients (its corral bits are made: below). */
   float bs = RC_AMR_AVGREFL * rc_amr_bright(sum); /* Radiance's bright(rcol) */
   bool lit = bs > RC_AMR_FTINY;
   float sc = lit ? 0.99f * n2 / rc_amr_bright(sum) : RC_AMR_AVGREFL * bs;
@@ -255,8 +255,10 @@ static int rc_amr_full(const rc_amb_hemi* hp, global const rc_amb_sample* s, flo
     ra.y = maxarad;
     if (ra.x > maxarad) ra.x = maxarad;
   }
+  /* Black hemispheres get corral bits too (Radiance gives them none), so that a dark record
+   * does not reach through a wall into a lit room any more than a lit one into a dark box. */
+  *corral = rc_amr_corral(&f, s, ns, u0, ra.x * aa, ra.y * aa, minarad, aa);
   if (lit) {
-    *corral = rc_amr_corral(&f, s, ns, u0, ra.x * aa, ra.y * aa, minarad, aa);
     /* extrapolation by the gradient stays within a factor of 2 inside the ellipse */
     float e = pg.x * pg.x * ra.x * ra.x + pg.y * pg.y * ra.y * ra.y;
     if (e > 1.0f) pg *= rsqrt(e);

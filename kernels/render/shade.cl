@@ -67,7 +67,7 @@ typedef struct rc_scene_args {
   global const rc_amb_record* amb_records;
   global const rc_amb_node* amb_nodes;
   global const uint* amb_blocked; /* per-hit lists of records whose leak test failed */
-  rc_params params; /* a private copy: read on every sample */
+  rc_params params;               /* a private copy: read on every sample */
 } rc_scene_args;
 
 #ifdef RADCL_HAS_AMBCACHE
@@ -104,6 +104,7 @@ typedef struct rc_out {
                    children and shadow rays start (rc_ray.dist0) */
   /* Cache records the host's leak tests rule out at this hit: [count, index...], or null. */
   global const uint* blocked;
+  float3 ng; /* the hit's geometric normal: rays leave from beside the surface (rc_leave) */
 } rc_out;
 
 static inline void rc_out_init(rc_out* o, int write) {
@@ -115,6 +116,7 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->wfac = 1.0f;
   o->super = 0;
   o->blocked = 0;
+  o->ng = (float3)(0.0f);
   o->nhemi = 0;
   o->child = 0;
   o->pcol = (float3)(1.0f);
@@ -123,6 +125,14 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->slots = 0u;
   o->side = 0;
   o->dist = 0.0f;
+}
+
+/* Where a ray leaving a surface point p (geometric normal ng) along dir starts: eps off the
+ * surface on the side it goes to, traced from there without a minimum distance. Starting on
+ * the surface and skipping the first eps of the way would also skip any other surface within
+ * eps of the point, which lets light through closed corners. */
+static inline float3 rc_leave(float3 p, float3 ng, float3 dir, float eps) {
+  return p + ng * (dot(dir, ng) < 0.0f ? -eps : eps);
 }
 
 /* Write mode ends for good once `shadows` more shadow records or `spawns` more children would
@@ -137,7 +147,8 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
   rc_out_reserve(o, 1u, 0u);
   if (o->write) {
     rc_shadow s;
-    s.org = (float4)(org, tmin);
+    s.org =
+        tmin > 0.0f ? (float4)(rc_leave(org, o->ng, dir, tmin), RC_TMIN_OFF) : (float4)(org, tmin);
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
     s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
@@ -193,7 +204,8 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
   rc_out_reserve(o, 0u, 1u);
   if (o->write) {
     rc_ray r;
-    r.org = (float4)(org, tmin);
+    r.org =
+        tmin > 0.0f ? (float4)(rc_leave(org, o->ng, dir, tmin), RC_TMIN_OFF) : (float4)(org, tmin);
     r.dir = (float4)(dir, INFINITY);
     r.coef = (float4)(parent->coef.xyz * coef, weight);
     r.primary = parent->primary;
@@ -766,6 +778,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   h.uv.z = r.dist0;
   h.uv.w = 0.0f;
   o->dist = r.dist0 + fmax(h.pos.w, 0.0f);
+  o->ng = h.nrm.xyz;
   /* The host writes a hit's list of leaking records into nrm.w's bits (1 + its offset). */
   uint leaks = as_uint(h.nrm.w);
   if (leaks != 0u) o->blocked = S->amb_blocked + (leaks - 1u);
@@ -926,11 +939,11 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       float t = h->pos.w;
       s->contrib.xyz *= rc_ext(cext, t);
       if (!(src->flags & RC_SRCF_FOLLOW)) return RC_SH_REACHED;
-      float3 n = h->nrm.xyz;
-      s->org = (float4)(h->pos.xyz, P->spec.z);
+      float3 n = h->nrm.xyz, rd = d - 2.0f * dot(d, n) * n;
+      s->org = (float4)(rc_leave(h->pos.xyz, n, rd, P->spec.z), RC_TMIN_OFF);
       s->dist0 += t;
       s->sdist0 += t;
-      s->dir = (float4)(d - 2.0f * dot(d, n) * n, distant ? s->dir.w : s->dir.w - t);
+      s->dir = (float4)(rd, distant ? s->dir.w : s->dir.w - t);
       s->source = src->parent;
       return (state & ~RC_SH_STATUS) | RC_SH_LATER | RC_SH_CONTINUE;
     }
@@ -1048,7 +1061,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   if (!pass || rc_max3(coef) <= 0.0f) return RC_SH_BLOCKED;
   float3 c = s->contrib.xyz * rc_ext(cext, t) * coef;
   if (rc_max3(c) <= 0.0f) return RC_SH_BLOCKED;
-  s->org = (float4)(h->pos.xyz, P->spec.z);
+  s->org = (float4)(rc_leave(h->pos.xyz, h->nrm.xyz, d, P->spec.z), RC_TMIN_OFF);
   /* A straight ray still has the rest of the way to a local source; a bent one goes on until
    * it meets something. */
   float rest = (state & RC_SH_BENT) ? INFINITY : s->dir.w - t;

@@ -21,7 +21,9 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
   if (!(l > 0) || !std::isfinite(l)) return false;
   rc.org = org;
   rc.dir = scale(dir, 1 / l);
-  rc.tmin = std::max(tmin, g.eps);
+  // A negative tmin: the origin is already off every surface (moved beside the one it leaves),
+  // so no hit is skipped; else hits nearer than the scene's epsilon are.
+  rc.tmin = tmin < 0 ? 0.0 : std::max(tmin, g.eps);
   rc.tmax = tmax;
   if (!(rc.tmax > rc.tmin)) return false;
   const Vec3 o = sub(org, g.centre);

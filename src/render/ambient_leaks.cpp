@@ -92,7 +92,7 @@ bool LeakTester::leaks(const LeakLookup& q, std::uint32_t k, const SegmentBlocke
   for (double& c : dir)
     c /= len;
   if (traced) *traced = true;
-  return segment_blocked(p, dir, len);
+  return segment_blocked(p, dir, len, ron);
 }
 
 std::size_t LeakTester::find(const LeakLookup& q, const SegmentBlocked& segment_blocked,

@@ -480,7 +480,9 @@ struct Renderer::Impl {
                                       static_cast<int>(m->ambient_depth), wt, hs));
       const std::uint32_t rec = next_sample_id++;
       rc_rng_key key = rc_make_key(rec, 0x616d62u, 0, settings.seed);
-      const Vec3d o = {m->org.x + centre[0], m->org.y + centre[1], m->org.z + centre[2]};
+      // The samples leave from beside the surface (as the kernels' rays: rc_leave).
+      const Vec3d o = {m->org.x + centre[0] + ray_eps * n[0], m->org.y + centre[1] + ray_eps * n[1],
+                       m->org.z + centre[2] + ray_eps * n[2]};
       for (int i = 0; i < ns; ++i)
         for (int j = 0; j < ns; ++j) {
           const std::uint32_t dim = 2u * static_cast<std::uint32_t>(i * ns + j);
@@ -696,7 +698,7 @@ struct Renderer::Impl {
         r.ambient_depth = st.ambient_depth;
         r.coef.w = st.weight;
         r.dist0 = st.dist0;
-        r.org.w = static_cast<float>(ray_eps);
+        r.org.w = RC_TMIN_OFF; // its origin is already beside the surface
       }
     }
     if (settings.irradiance_I && nesting == 0) {
@@ -1050,10 +1052,12 @@ struct Renderer::Impl {
     const std::size_t n = queue.size();
     const double eps = ray_eps;
     auto segment_blocked = [&](const std::array<double, 3>& o, const std::array<double, 3>& d,
-                               double tmax) {
-      Vec3d org = {o[0] + centre[0], o[1] + centre[1], o[2] + centre[2]};
+                               double tmax, const std::array<double, 3>& n) {
+      // From beside the surface, as the kernels' rays leave it (rc_leave).
+      Vec3d org = {o[0] + centre[0] + eps * n[0], o[1] + centre[1] + eps * n[1],
+                   o[2] + centre[2] + eps * n[2]};
       const Vec3d dir = {d[0], d[1], d[2]};
-      double t0 = eps;
+      double t0 = RC_TMIN_OFF;
       for (int k = 0; k < 64; ++k) { // void surfaces are passed, as Radiance passes them
         std::optional<geometry::Hit> h = geom.intersect(org, dir, t0, tmax);
         if (!h) return false;

@@ -41,7 +41,8 @@ struct Segments {
   std::array<double, 3> org{}, dir{};
   double tmax = 0;
   render::SegmentBlocked fn() {
-    return [this](const std::array<double, 3>& o, const std::array<double, 3>& d, double t) {
+    return [this](const std::array<double, 3>& o, const std::array<double, 3>& d, double t,
+                  const std::array<double, 3>&) {
       ++calls;
       org = o;
       dir = d;

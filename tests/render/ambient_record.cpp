@@ -209,7 +209,7 @@ Ref reference(const rc_amb_hemi& h, const std::vector<rc_amb_sample>& all) {
     ra[1] = maxarad;
     if (ra[0] > maxarad) ra[0] = maxarad;
   }
-  if (lit && ns >= 8) { // corral
+  if (ns >= 8) { // corral (radcl marks black hemispheres too; Radiance does not)
     const double r0 = ra[0] * aa, r1 = ra[1] * aa, max_d = 1 / (minarad * aa + 0.001);
     const double res = 0.5 * M_PI / ns, step = res / (int(16 / M_PI * res) + 1.01);
     double avg = 0;

@@ -3,6 +3,7 @@
 // against Radiance's near-converged _high result, no worse than Radiance's own default run).
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <string>
 #include <unistd.h>
@@ -188,8 +189,12 @@ TEST(GoldenAmbientCache, DISABLED_OfficeClearDefaultAccuracy) {
   EXPECT_LE(e.worst, 1.5 * r.worst) << "radcl " << e.worst << ", Radiance " << r.worst;
 }
 
-// -aw: rays past the last bounce take -av averaged with the records' values (here a black -av:
-// half their geometric mean), which adds light; without a cache (-aa 0) -av stays as given.
+// -aw: rays past the last bounce take -av averaged with the records' values (with a black -av,
+// their geometric mean times AVGREFL), which adds light; without a cache (-aa 0) -av stays as
+// given. radcl updates the average per round of records (docs/ambient.md), so the records
+// that see it are those made after others exist: here 24 records facing the sphere's centre
+// come first (one round, -aw 1), then meters at the same points tilted 45 degrees (no record
+// covers them) make their own, seeing the average of the 24 (-aw 1) or the black -av (-aw 0).
 TEST(GoldenAmbientCache, AmbientValueWeight) {
   auto mean = [](const std::vector<std::array<double, 3>>& v) {
     double m = 0;
@@ -197,15 +202,44 @@ TEST(GoldenAmbientCache, AmbientValueWeight) {
       m += c[0] / v.size();
     return m;
   };
-  // radcl averages per round of records, so only records made after the first round see the
-  // average (docs/ambient.md): with -ab 1 all 24 meters' records come in one round and -aw
-  // changes nothing; with -ab 2 the level-1 records come in several (measured: +0.10%).
-  const std::string o = "-u- -ab 2 -ad 512 -as 128 -ar 64 -lw 1e-5 -av 0 0 0 ";
-  double plain = mean(rtrace_sensors(o + "-aa 0.1 -aw 0", "sphere.oct", "sphere_wall.pts"));
-  double weighted = mean(rtrace_sensors(o + "-aa 0.1 -aw 1", "sphere.oct", "sphere_wall.pts"));
-  EXPECT_GT(weighted, plain * 1.0005);
+  const std::string o = "-u- -ab 1 -ad 1024 -as 256 -ar 64 -lw 1e-5 -av 0 0 0 -aa 0.1 ";
+  const std::string tag = std::to_string(::getpid());
+  fs::path base = fs::temp_directory_path() / ("radcl-aw-" + tag + ".amb");
+  fs::path tilted = fs::temp_directory_path() / ("radcl-aw-" + tag + ".pts");
+  fs::remove(base);
+  rtrace_sensors(o + "-aw 1 -af " + base.string(), "sphere.oct", "sphere_wall.pts");
+  {
+    std::ifstream in(radcl::test::data("scenes/sphere_wall.pts"));
+    std::ofstream out(tilted);
+    double p[3], d[3];
+    while (in >> p[0] >> p[1] >> p[2] >> d[0] >> d[1] >> d[2]) {
+      // d turned 45 degrees towards a direction perpendicular to it.
+      double t[3] = {d[1], -d[0], 0};
+      double l = std::sqrt(t[0] * t[0] + t[1] * t[1]);
+      if (l < 1e-3) t[0] = 1, t[1] = 0, l = 1;
+      out << p[0] << " " << p[1] << " " << p[2];
+      for (int k = 0; k < 3; ++k)
+        out << " " << d[k] + t[k] / l;
+      out << "\n";
+    }
+  }
+  auto second = [&](const std::string& aw) {
+    fs::path copy = fs::temp_directory_path() / ("radcl-aw-" + tag + "-" + aw + ".amb");
+    fs::copy_file(base, copy, fs::copy_options::overwrite_existing);
+    double m = mean(
+        rtrace_sensors(o + "-aw " + aw + " -af " + copy.string(), "sphere.oct", tilted.string()));
+    fs::remove(copy);
+    return m;
+  };
+  const double plain = second("0"), weighted = second("1");
+  // The samples' hits at the last bounce add 0.8 x the average (about 0.7) over the hemisphere:
+  // some 80% more than the black -av gives.
+  EXPECT_GT(weighted, plain * 1.3) << plain;
   EXPECT_LT(weighted, exact_sphere(8)); // far from every bounce's light
-  double a = mean(rtrace_sensors(o + "-aa 0 -aw 0", "sphere.oct", "sphere_wall.pts"));
-  double b = mean(rtrace_sensors(o + "-aa 0 -aw 10", "sphere.oct", "sphere_wall.pts"));
+  fs::remove(base);
+  fs::remove(tilted);
+  const std::string s = "-u- -ab 1 -ad 1024 -as 256 -lw 1e-5 -av 0 0 0 ";
+  double a = mean(rtrace_sensors(s + "-aa 0 -aw 0", "sphere.oct", "sphere_wall.pts"));
+  double b = mean(rtrace_sensors(s + "-aa 0 -aw 10", "sphere.oct", "sphere_wall.pts"));
   EXPECT_EQ(a, b);
 }

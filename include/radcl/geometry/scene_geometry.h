@@ -95,7 +95,8 @@ public:
   SceneGeometry(SceneGeometry&&) noexcept;
   SceneGeometry& operator=(SceneGeometry&&) noexcept;
 
-  // Nearest hit with tmin < t <= tmax (world distances; t > epsilon() always).
+  // Nearest hit with tmin < t <= tmax (world distances; t > epsilon() unless tmin < 0, which
+  // says the origin is off every surface: then any t > 0).
   std::optional<Hit> intersect(const Vec3d& org, const Vec3d& dir, double tmin = 0,
                                double tmax = 1e300) const;
   // Whether anything lies in (tmin, tmax).

@@ -24,10 +24,11 @@ struct LeakLookup {
   float weight = 1;
 };
 
-// Whether a segment from `org` (re-centred) along unit `dir` meets a visible surface before
-// `tmax`.
-using SegmentBlocked = std::function<bool(const std::array<double, 3>& org,
-                                          const std::array<double, 3>& dir, double tmax)>;
+// Whether a segment from `org` (re-centred, on a surface whose normal on the segment's side is
+// `normal`) along unit `dir` meets a visible surface before `tmax`.
+using SegmentBlocked =
+    std::function<bool(const std::array<double, 3>& org, const std::array<double, 3>& dir,
+                       double tmax, const std::array<double, 3>& normal)>;
 
 class LeakTester {
 public:
