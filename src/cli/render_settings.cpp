@@ -9,6 +9,7 @@
 #include "radcl/ambient/format.h"
 #include "radcl/geometry/scene_geometry.h"
 #include "radcl/render/ambient_cache.h"
+#include "radcl/util/error.h"
 
 namespace radcl::cli {
 
@@ -38,6 +39,9 @@ render::RenderSettings render_settings(const options::RenderOptions& r) {
   }
   s.lr = r.max_depth;
   s.lw = r.min_weight;
+  // Radiance's rayorigin() stops at the first child ray with this; nearly every render makes
+  // one, so the settings are refused before any output.
+  if (s.lr <= 0 && s.lw <= 0) throw FatalError("zero ray weight in Russian roulette");
   s.irradiance_i = r.irradiance;
   s.seed =
       r.uncorrelated ? static_cast<std::uint32_t>(std::time(nullptr) ^ (::getpid() << 16)) : 0u;

@@ -176,6 +176,8 @@ struct Renderer::Impl {
     p.as = super ? static_cast<std::uint32_t>(st.as) : 0u;
     ray_eps = p.spec.z;
     cache_records = st.ambient_records;
+    for (const ambient::AmbientRecord& a : cache_records)
+      cache_local.push_back(local_record(a));
     building = uses_cache(st) && st.make_records && st.trace == RenderSettings::Trace::Off;
     p.amb = f4(st.aa, st.ambient_min_radius, 0, 0);
     base = p;
@@ -213,7 +215,11 @@ struct Renderer::Impl {
   std::span<const RayStart> starts; // per primary of the current run(); empty: the caller's
   std::vector<rc_ray> misses;       // record requests of the current pass
   std::vector<ambient::AmbientRecord> cache_records; // all, world coordinates
-  std::vector<ambient::AmbientRecord> made;          // made since take_new_records()
+  // The same records with positions relative to the scene's centre: the lookup's copy. A
+  // record made here keeps its position as the kernel computed it (float world coordinates
+  // far from the origin would move it by their rounding: 4 mm at 1e5 m, 3 cm at 1e6 m).
+  std::vector<ambient::AmbientRecord> cache_local;
+  std::vector<ambient::AmbientRecord> made; // made since take_new_records()
   std::uint32_t next_sample_id = 0x40000000u;
   std::unique_ptr<RecordMaker> maker; // the record kernel, built when first needed
 
@@ -227,8 +233,7 @@ struct Renderer::Impl {
 
   void upload_cache() {
     cache = AmbientCacheBuffers{};
-    if (uses_cache(settings))
-      cache = build_ambient_cache(cache_records, geom.centre(), settings.aa);
+    if (uses_cache(settings)) cache = build_ambient_cache(cache_local, {0, 0, 0}, settings.aa);
     // RADCL_LEAK_TEST=0 leaves the leak test out (to measure what it costs and changes).
     const char* lt = std::getenv("RADCL_LEAK_TEST");
     leak_tester = lt && std::string(lt) == "0"
@@ -246,6 +251,13 @@ struct Renderer::Impl {
     rc_params p = base;
     p.amb.w = collecting ? 1.0f : 0.0f;
     params.write(&p, sizeof p);
+  }
+
+  // A record read from a file or shared by another process, re-centred (in double).
+  ambient::AmbientRecord local_record(ambient::AmbientRecord a) const {
+    for (int i = 0; i < 3; ++i)
+      a.pos[i] = static_cast<float>(static_cast<double>(a.pos[i]) - centre[i]);
+    return a;
   }
 
   void set_collect(bool on) {
@@ -537,6 +549,7 @@ struct Renderer::Impl {
       if (out.made[k].status != RC_AMB_RECORD) continue;
       ambient::AmbientRecord a = to_ambient_record(out.records[k], out.made[k].corral, centre);
       cache_records.push_back(a);
+      cache_local.push_back(to_ambient_record(out.records[k], out.made[k].corral, {0, 0, 0}));
       made.push_back(a);
       ++added;
     }
@@ -1261,6 +1274,8 @@ std::vector<ambient::AmbientRecord> Renderer::take_new_records() {
 void Renderer::add_records(std::span<const ambient::AmbientRecord> records) {
   if (records.empty()) return;
   impl_->cache_records.insert(impl_->cache_records.end(), records.begin(), records.end());
+  for (const ambient::AmbientRecord& a : records)
+    impl_->cache_local.push_back(impl_->local_record(a));
   impl_->upload_cache();
 }
 const CompiledScene& Renderer::compiled() const {
