@@ -22,6 +22,10 @@ int roots(double a, double b, double c, double disc, double r[2]) {
   }
   r[0] = q / a;
   r[1] = c / q;
+  // |q / a| is the larger root's size. Where q is tiny (a ray tangent to the surface at its
+  // start), c / q is rounding noise over rounding noise (a ray leaving a sphere along its
+  // tangent plane "hit" it at t = 1): then the direct form is the precise one.
+  if (!(std::abs(r[1]) <= std::abs(r[0]))) r[1] = (std::copysign(std::sqrt(disc), b) - b) / a;
   if (r[0] > r[1]) std::swap(r[0], r[1]);
   return 2;
 }
