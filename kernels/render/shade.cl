@@ -127,13 +127,23 @@ static inline void rc_out_reserve(rc_out* o, uint shadows, uint spawns) {
   if (o->nshadow + shadows > o->cap_shadow || o->nspawn + spawns > o->cap_spawn) o->write = 0;
 }
 
+/* Where a ray leaving surface point p (relative to the scene's centre) starts: tmin (the
+ * scene's floor, spec.z), or farther where p's float rounding is coarser than that, so a
+ * 10 km ground keeps a hair's breadth near the centre and only far out needs more. */
+#define RC_LEAVE_REL 8e-7f
+static inline float rc_leave(float3 p, float tmin) {
+  if (!(tmin > 0.0f)) return tmin;
+  float3 a = fabs(p);
+  return fmax(tmin, RC_LEAVE_REL * fmax(a.x, fmax(a.y, a.z)));
+}
+
 static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
                                   float3 contrib, const rc_ray* r, uint source) {
   if (o->super) return;
   rc_out_reserve(o, 1u, 0u);
   if (o->write) {
     rc_shadow s;
-    s.org = (float4)(org, tmin);
+    s.org = (float4)(org, rc_leave(org, tmin));
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
     s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
@@ -189,7 +199,7 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
   rc_out_reserve(o, 0u, 1u);
   if (o->write) {
     rc_ray r;
-    r.org = (float4)(org, tmin);
+    r.org = (float4)(org, rc_leave(org, tmin));
     r.dir = (float4)(dir, INFINITY);
     r.coef = (float4)(parent->coef.xyz * coef, weight);
     r.primary = parent->primary;
@@ -913,7 +923,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       s->contrib.xyz *= rc_ext(cext, t);
       if (!(src->flags & RC_SRCF_FOLLOW)) return RC_SH_REACHED;
       float3 n = h->nrm.xyz;
-      s->org = (float4)(h->pos.xyz, P->spec.z);
+      s->org = (float4)(h->pos.xyz, rc_leave(h->pos.xyz, P->spec.z));
       s->dist0 += t;
       s->sdist0 += t;
       s->dir = (float4)(d - 2.0f * dot(d, n) * n, distant ? s->dir.w : s->dir.w - t);
@@ -1034,7 +1044,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   if (!pass || rc_max3(coef) <= 0.0f) return RC_SH_BLOCKED;
   float3 c = s->contrib.xyz * rc_ext(cext, t) * coef;
   if (rc_max3(c) <= 0.0f) return RC_SH_BLOCKED;
-  s->org = (float4)(h->pos.xyz, P->spec.z);
+  s->org = (float4)(h->pos.xyz, rc_leave(h->pos.xyz, P->spec.z));
   /* A straight ray still has the rest of the way to a local source; a bent one goes on until
    * it meets something. */
   float rest = (state & RC_SH_BENT) ? INFINITY : s->dir.w - t;

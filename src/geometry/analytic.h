@@ -24,8 +24,9 @@ struct AnalyticSurface {
 };
 
 // Validates and converts `o` (a sphere, bubble, cone, cup, cylinder, tube or ring). Throws
-// FatalError for bad argument counts and illegal radii; warns for negative radii. Returns
-// nullopt (after Radiance's warning) for a cone without orientation.
+// FatalError for bad argument counts and negative ring radii; warns for other negative radii.
+// Returns nullopt (after Radiance's warning) for degenerate surfaces: zero or illegal radii,
+// no orientation.
 std::optional<AnalyticSurface> make_analytic(const scene::Object& o, std::int32_t index);
 
 // Re-expresses the surface relative to `origin`.

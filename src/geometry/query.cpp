@@ -4,6 +4,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -21,10 +22,11 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
   if (!(l > 0) || !std::isfinite(l)) return false;
   rc.org = org;
   rc.dir = scale(dir, 1 / l);
-  rc.tmin = std::max(tmin, g.eps);
+  const Vec3 o = sub(org, g.centre);
+  const double reach = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
+  rc.tmin = std::max(tmin, std::max(g.eps, g.eps_rel * reach));
   rc.tmax = tmax;
   if (!(rc.tmax > rc.tmin)) return false;
-  const Vec3 o = sub(org, g.centre);
   ray.org_x = static_cast<float>(o[0]);
   ray.org_y = static_cast<float>(o[1]);
   ray.org_z = static_cast<float>(o[2]);
@@ -50,6 +52,7 @@ std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, 
   RayContext rc;
   RTCRayHit rh;
   if (!setup(g, org, dir, tmin, tmax, rc, rh.ray)) return std::nullopt;
+  rc.closest = true;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(g.top, &rc.ctx, &rh);

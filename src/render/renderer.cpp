@@ -151,11 +151,12 @@ struct Renderer::Impl {
     rc_params p{};
     p.av = f4(st.av[0], st.av[1], st.av[2], st.lw);
     p.direct = f4(st.ds, st.dj, st.dt, st.dc);
-    // Rays leave surfaces this far along; the kernels work in float, so never below what
-    // float resolves at the scene's size.
+    // Rays leave surfaces at least this far along; the kernels widen it where a point's float
+    // coordinates are coarser (rc_leave in shade.cl), so small detail near the centre of a
+    // huge scene is not skipped.
     auto b = geom.bounds();
     double size = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2], 1e-3});
-    p.spec = f4(st.ss, st.st, std::max(geom.epsilon(), 4e-7 * size), 0);
+    p.spec = f4(st.ss, st.st, geom.epsilon(), 0);
     p.seed = st.seed;
     p.lr = st.lr;
     p.flags = (st.dv ? RC_PF_DV : 0u) | (st.bv ? RC_PF_BV : 0u) |
@@ -167,7 +168,9 @@ struct Renderer::Impl {
     bool super = st.as > 0 && st.ab > 0 && st.ad > 0;
     tree = super || st.trace != RenderSettings::Trace::Off;
     p.as = super ? static_cast<std::uint32_t>(st.as) : 0u;
-    ray_eps = p.spec.z;
+    // Record samples start at points given in float by the host: what float resolves at the
+    // scene's size.
+    ray_eps = std::max(geom.epsilon(), 4e-7 * size);
     cache_records = st.ambient_records;
     building = uses_cache(st) && st.make_records && st.trace == RenderSettings::Trace::Off;
     p.amb = f4(st.aa, st.ambient_min_radius, 0, 0);

@@ -77,7 +77,8 @@ struct SurfaceCounts {
 
 struct GeometryOptions {
   // Hits closer than this (world distance) are ignored so that rays leaving a surface do not
-  // hit it again. 0: automatic, max(1e-6, 1e-7 x scene diagonal).
+  // hit it again. 0: automatic, max(1e-6, 1e-7 x the largest coordinate of the ray's origin
+  // relative to the scene's centre).
   double epsilon = 0;
 };
 
