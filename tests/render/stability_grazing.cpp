@@ -6,8 +6,10 @@
 // checks go through SceneGeometry (primary rays); irradiance checks through the renderer with
 // -ab 0 -dj 0 -ds 0 -dt 0, which are deterministic and, for sphere lights wholly in front of
 // the sensor, exact: E = pi L r^2 cos(theta) / d^2.
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <numbers>
@@ -19,7 +21,9 @@
 #include "radcl/geometry/scene_geometry.h"
 #include "radcl/render/renderer.h"
 #include "radcl/scene/loader.h"
+#include "radcl/scene/mesh.h"
 #include "scene_dir.h"
+#include "test_env.h"
 
 using namespace radcl;
 
@@ -375,5 +379,83 @@ TEST_F(StabilityGrazing, RandomRaysFromSurfacesStayFinite) {
     for (int k = 0; k < 3; ++k) {
       EXPECT_TRUE(std::isfinite(res[i].value[k])) << i;
       EXPECT_GE(res[i].value[k], 0) << i;
+    }
+}
+
+// A triangle mesh (the reference set's octahedron): rays starting on a vertex, an edge or a
+// face, pointing out, never hit the mesh; pointing in through the centre, they hit the far
+// side, never their own starting point.
+TEST_F(StabilityGrazing, RaysStartingOnMeshVerticesAndEdges) {
+  std::filesystem::copy_file(radcl::test::data("scenes/octa.rtm"), "octa.rtm");
+  load("void plastic grey 0 0 5 .5 .5 .5 0 0\ngrey mesh orn 1 octa.rtm 0 0\n");
+  ASSERT_EQ(ls->meshes.size(), 1u);
+  const scene::TriangleMesh& m = *ls->meshes.begin()->second;
+  ASSERT_GE(m.triangles.size(), 8u);
+  V c{0, 0, 0};
+  for (const auto& p : m.positions)
+    c = add(c, mul(p, 1.0 / m.positions.size()));
+  double size = 0;
+  for (const auto& p : m.positions)
+    size = std::max(size, std::sqrt(dot(sub(p, c), sub(p, c))));
+  std::vector<V> starts;
+  for (const auto& t : m.triangles) {
+    const V &a = m.positions[t[0]], &b = m.positions[t[1]], &d = m.positions[t[2]];
+    starts.push_back(a);                               // vertex
+    starts.push_back(mul(add(a, b), 0.5));             // edge
+    starts.push_back(add(mul(a, 0.3), mul(b, 0.7)));   // edge, off centre
+    starts.push_back(mul(add(add(a, b), d), 1.0 / 3)); // face
+  }
+  int n = 0;
+  for (const V& p : starts) {
+    const V out = unit(sub(p, c));
+    auto h = hit(p, out);
+    EXPECT_FALSE(h) << "out of " << p[0] << "," << p[1] << "," << p[2] << " t " << (h ? h->t : 0);
+    for (const V& tilt : std::vector<V>{{0, 0, 0}, {0.1, -0.05, 0.07}}) {
+      const V in = unit(add(mul(out, -1), tilt));
+      auto g = hit(p, in);
+      ASSERT_TRUE(g) << p[0] << "," << p[1] << "," << p[2];
+      EXPECT_GT(g->t, 0.5 * size) << p[0] << "," << p[1] << "," << p[2];
+      EXPECT_FALSE(g->front);
+      ++n;
+    }
+  }
+  EXPECT_EQ(n, 2 * static_cast<int>(starts.size()));
+}
+
+// Glossy, metallic, transmitting and mirror surfaces seen at grazing angles (|cos| from 1e-2
+// down to 1e-7) with a lamp glinting in them: finite, non-negative, and no brighter than
+// the lamp (100) itself.
+TEST_F(StabilityGrazing, GrazingShadingOfGlossyMaterials) {
+  const std::string text = "void light lm 0 0 3 100 100 100\n"
+                           "lm sphere lamp 0 0 4 20 0 0.5 0.3\n"
+                           "void plastic shiny 0 0 5 .5 .5 .5 .05 .01\n"
+                           "void metal steel 0 0 5 .8 .8 .8 .9 .02\n"
+                           "void trans frost 0 0 7 .6 .6 .6 .04 .05 .5 .5\n"
+                           "void glass clear 0 0 3 .9 .9 .9\n"
+                           "void mirror mir 0 0 3 .9 .9 .9\n"
+                           "shiny polygon f_shiny 0 0 12 -9 -9 0 9 -9 0 9 -3 0 -9 -3 0\n"
+                           "steel polygon f_steel 0 0 12 -9 -3 0 9 -3 0 9 3 0 -9 3 0\n"
+                           "frost polygon f_frost 0 0 12 -9 3 0 9 3 0 9 9 0 -9 9 0\n"
+                           "clear sphere ball 0 0 4 0 -6 1 1\n"
+                           "mir sphere bead 0 0 4 0 6 1 1\n"
+                           "steel cylinder pipe 0 0 7 -5 0 0 -5 0 3 0.5\n";
+  std::vector<render::PrimaryRay> rays;
+  for (double c : {1e-2, 1e-3, 1e-4, 1e-5, 1e-7})
+    for (double y : {-6.0, -0.2, 0.0, 6.0}) {
+      const double s = std::sqrt(1 - c * c);
+      rays.push_back({{-8, y, 8 * c / s}, {s, 0, -c}, 0});       // onto the floor, towards the lamp
+      rays.push_back({{-8, y + 1e-3, 2 - c}, {1, 0, 0}, 0});     // over the spheres' tops
+      rays.push_back({{-5.5 + c * 0.5, -8, 1.5}, {0, 1, 0}, 0}); // along the pipe's side
+    }
+  render::RenderSettings st = direct(false);
+  st.ab = 1;
+  st.ad = 64;
+  st.as = 0;
+  auto res = render(text, rays, st);
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_TRUE(std::isfinite(res[i].value[k])) << i;
+      EXPECT_GE(res[i].value[k], 0) << i;
+      EXPECT_LE(res[i].value[k], 100) << i;
     }
 }
