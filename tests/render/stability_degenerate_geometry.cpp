@@ -289,3 +289,56 @@ TEST_F(StabilityDegenerate, HugeGroundWithSmallDetail) {
     EXPECT_NEAR(res[i].value[0], cases[i].want, 1e-4 * cases[i].want + 1e-9) << "case " << i;
   }
 }
+
+// The same kind of detail 4 km from the scene's centre, where float positions are 0.24 mm
+// apart and rays leave surfaces 8e-7 x 4000 = 3.2 mm along (shade.cl's rc_leave): a fin 1 cm
+// tall shades the ground 5 mm and more from it; the open ground reads the sun.
+std::vector<double> far_fin_irradiance(const std::vector<double>& gaps, double& full) {
+  const double L = 1e6, ang = 0.5, el = 30 * kPi / 180;
+  full = L * 2 * kPi * (1 - std::cos(ang / 2 * kPi / 180)) * std::sin(el);
+  char sun[200];
+  std::snprintf(sun, sizeof sun,
+                "void light sunl 0 0 3 %g %g %g\nsunl source sun 0 0 4 %.17g 0 %.17g %g\n", L, L, L,
+                std::cos(el), std::sin(el), ang);
+  std::ofstream("far.rad") << sun
+                           << "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                              "grey polygon ground 0 0 12 -5000 -5000 0 5000 -5000 0 5000 5000 0 "
+                              "-5000 5000 0\n"
+                              "grey polygon fin 0 0 12 4000 -3000 0 4000 -3000 .01 4000 -2999.99 "
+                              ".01 4000 -2999.99 0\n";
+  std::vector<render::PrimaryRay> rays;
+  for (double g : gaps)
+    rays.push_back({{4000 - g, -2999.995, 0}, {0, 0, 1}, 0});
+  render::RenderSettings st;
+  st.ab = 0;
+  st.dj = 0;
+  st.ds = 0;
+  st.dt = 0;
+  st.irradiance_I = true;
+  std::vector<double> out;
+  scene::LoadedScene scene = scene::load_scene({"far.rad"});
+  render::Renderer renderer(scene, st, device::default_context());
+  std::vector<render::PrimaryResult> res(rays.size());
+  renderer.render(rays, res);
+  for (const auto& r : res)
+    out.push_back(r.value[0]);
+  return out;
+}
+
+TEST_F(StabilityDegenerate, FarDetailOnHugeGround) {
+  double full = 0;
+  auto e = far_fin_irradiance({0.005, 0.01, -0.005}, full);
+  EXPECT_EQ(e[0], 0);
+  EXPECT_EQ(e[1], 0);
+  EXPECT_NEAR(e[2], full, 1e-5 * full); // the sunny side
+}
+
+// Known gap: closer than rc_leave's distance the fin is skipped and the ground reads the full
+// sun (measured: lit at 0.5, 1 and 2 mm, shaded from 3 mm). Radiance, in double with FTINY,
+// shades them. Needs the ray's origin surface on the device (docs/stability.md).
+TEST_F(StabilityDegenerate, DISABLED_FarDetailWithinFloatResolution) {
+  double full = 0;
+  auto e = far_fin_irradiance({0.0005, 0.001, 0.002}, full);
+  for (double v : e)
+    EXPECT_EQ(v, 0);
+}
