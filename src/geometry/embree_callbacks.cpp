@@ -56,7 +56,7 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
   const double bound = std::min(rc->tmax, rc->best ? std::nextafter(rc->best_t, INFINITY)
                                                    : static_cast<double>(tfar));
   const AnalyticSurface& s = proto->analytic[args->primID];
-  if (!intersect_analytic(s, lr.o, lr.d, rc->tmin, bound, t, n)) return;
+  if (!intersect_analytic(s, lr.o, lr.d, rc->tmin, bound, t, n, rc->on * length(lr.d))) return;
   const std::uint64_t key = tie_key(inst, static_cast<std::uint32_t>(s.object));
   if (rc->loses(t, key)) return;
   rc->accept(t, key);
@@ -86,7 +86,8 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
   double t;
   Vec3 n;
   if (intersect_analytic(proto->analytic[args->primID], lr.o, lr.d, rc->tmin,
-                         std::min(rc->tmax, static_cast<double>(tfar)), t, n))
+                         std::min(rc->tmax, static_cast<double>(tfar)), t, n,
+                         rc->on * length(lr.d)))
     tfar = -std::numeric_limits<float>::infinity();
 }
 
@@ -102,7 +103,9 @@ void triangle_filter(const RTCFilterFunctionNArguments* args) {
   const LocalRay lr = local_ray(*rc, inst);
   double t;
   Vec3 n;
-  if (!triangle_distance(*proto, prim, lr.o, lr.d, t, n) || !(t > rc->tmin && t < rc->tmax)) {
+  // A ray whose origin lies in the triangle's plane (within rc->on) cannot meet it again.
+  if (!triangle_distance(*proto, prim, lr.o, lr.d, t, n) || !(t > rc->tmin && t < rc->tmax) ||
+      std::abs(t * dot(n, lr.d)) <= rc->on * length(lr.d)) {
     args->valid[0] = 0;
     return;
   }

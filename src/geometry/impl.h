@@ -95,6 +95,9 @@ struct RayContext {
   const SceneGeometry::Impl* impl = nullptr;
   Vec3 org{}, dir{}; // world, dir unit
   double tmin = 0, tmax = 0;
+  // An origin this close (world distance) to a surface lies on it (float rounding of the point
+  // the ray leaves): that surface is not met again at the origin (intersect_analytic).
+  double on = 0;
   // Last user-geometry hit accepted (exact values for the final answer).
   bool user_hit = false;
   unsigned inst = RTC_INVALID_GEOMETRY_ID, geom = RTC_INVALID_GEOMETRY_ID, prim = 0;

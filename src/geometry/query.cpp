@@ -25,6 +25,9 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
   const Vec3 o = sub(org, g.centre);
   const double reach = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
   rc.tmin = std::max(tmin, std::max(g.eps, g.eps_rel * reach));
+  // Points handed over in float relative to the centre are off their surface by up to three
+  // half units in the last place of their largest coordinate.
+  rc.on = 4e-7 * reach + 1e-12;
   rc.tmax = tmax;
   if (!(rc.tmax > rc.tmin)) return false;
   ray.org_x = static_cast<float>(o[0]);

@@ -459,3 +459,52 @@ TEST_F(StabilityGrazing, GrazingShadingOfGlossyMaterials) {
       EXPECT_LE(res[i].value[k], 100) << i;
     }
 }
+
+// Convex surfaces, one at a time, inside a uniform glowing bubble (radiance 1, no direct
+// source): every ambient sample leaving a sphere, cylinder, cone or polygon (level, tilted) sees
+// the bubble unless it hits the surface it leaves, so a diffuse reflectance of 0.5 reads exactly
+// 0.5 — near the scene's centre and 3 km from it.
+TEST_F(StabilityGrazing, AmbientRaysNeverHitTheirOwnConvexSurface) {
+  for (double off : {0.0, 3000.0}) {
+    const std::string o = std::to_string(off);
+    const std::vector<std::string> shapes = {
+        "grey sphere ball 0 0 4 " + o + " 0 1 0.5\n",
+        "grey cylinder can 0 0 7 " + o + " 0 0 " + o + " 0 2 0.5\n",
+        "grey cone hat 0 0 8 " + o + " 0 0 " + o + " 0 1 0.5 0\n",
+        "grey polygon tile 0 0 12 " + std::to_string(off - 1) + " -1 0.5 " +
+            std::to_string(off + 1) + " -1 0.5 " + std::to_string(off + 1) + " 1 0.5 " +
+            std::to_string(off - 1) + " 1 0.5\n",
+        "grey polygon tilt 0 0 12 " + std::to_string(off - 1) + " -1 0.5 " +
+            std::to_string(off + 1) + " -1 0.9 " + std::to_string(off + 1) + " 1 1.3 " +
+            std::to_string(off - 1) + " 1 0.9\n"};
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+      const std::string text = "void glow sky 0 0 4 1 1 1 0\n"
+                               "sky bubble dome 0 0 4 0 0 0 6000\n"
+                               "void plastic grey 0 0 5 .5 .5 .5 0 0\n" +
+                               shapes[k];
+      std::vector<render::PrimaryRay> rays;
+      for (int i = 0; i < 24; ++i) {
+        const double a = 2 * kPi * i / 24, c = std::cos(a), s = std::sin(a);
+        if (k >= 3)
+          rays.push_back({{off + 0.5 * c, 0.5 * s, 3}, {0.1 * c, 0.1 * s, -1}, 0});
+        else
+          rays.push_back({{off + 3 * c, 3 * s,
+                           k == 0   ? 1 + 0.45 * std::sin(3 * a)
+                           : k == 1 ? 1.3
+                                    : 0.4},
+                          {-c, -s, k == 1 ? -0.1 : 0},
+                          0});
+      }
+      render::RenderSettings st = direct(false);
+      st.ab = 1;
+      st.ad = 1024;
+      st.as = 0;
+      auto res = render(text, rays, st);
+      for (std::size_t i = 0; i < rays.size(); ++i) {
+        ASSERT_TRUE(res[i].hit) << i;
+        EXPECT_NEAR(res[i].value[0], 0.5, 1e-5)
+            << "offset " << off << " shape " << k << " ray " << i;
+      }
+    }
+  }
+}
