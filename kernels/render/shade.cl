@@ -127,18 +127,37 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->dist = 0.0f;
 }
 
-/* Where a ray leaving a surface point p (geometric normal ng) along dir starts: eps off the
- * surface on the side it goes to, traced from there without a minimum distance. Starting on
- * the surface and skipping the first eps of the way would also skip any other surface within
- * eps of the point, which lets light through closed corners. */
-static inline float3 rc_leave(float3 p, float3 ng, float3 dir, float eps) {
-  return p + ng * (dot(dir, ng) < 0.0f ? -eps : eps);
-}
-
 /* Write mode ends for good once `shadows` more shadow records or `spawns` more children would
  * not fit: a partly written hit is rewritten in full later, so nothing may depend on it. */
 static inline void rc_out_reserve(rc_out* o, uint shadows, uint spawns) {
   if (o->nshadow + shadows > o->cap_shadow || o->nspawn + spawns > o->cap_spawn) o->write = 0;
+}
+
+/* How far from surface point p (relative to the scene's centre) a ray leaving it starts: the
+ * scene's floor (spec.z), or more where p's float rounding is coarser than that, so a 10 km
+ * ground keeps a hair's breadth near its centre and only far out needs more. */
+#define RC_LEAVE_REL 8e-7f
+static inline float rc_leave_dist(float3 p, float eps) {
+  float3 a = fabs(p);
+  return fmax(eps, RC_LEAVE_REL * fmax(a.x, fmax(a.y, a.z)));
+}
+
+/* Where a ray leaving surface point p (geometric normal ng) along dir starts: that far off the
+ * surface on the side it goes to, traced from there with no minimum distance (RC_TMIN_OFF).
+ * Starting on the surface and skipping the first part of the way would also skip any other
+ * surface that near the point, which lets light through closed corners. */
+static inline float3 rc_leave(float3 p, float3 ng, float3 dir, float eps) {
+  return p + ng * (dot(dir, ng) < 0.0f ? -rc_leave_dist(p, eps) : rc_leave_dist(p, eps));
+}
+
+/* A ray's origin and tmin as it leaves the hit `o` describes: beside a surface; from a -I meter
+ * (no surface: ng = 0) at its point, skipping hits nearer than tmin (and what the geometry
+ * adds for float rounding there), as Radiance skips FTINY: a meter placed on a surface sees
+ * through it, one a millimetre from a fin sees the fin. */
+static inline float4 rc_leave_org(const rc_out* o, float3 org, float3 dir, float tmin) {
+  if (!(tmin > 0.0f)) return (float4)(org, tmin);
+  if (all(o->ng == (float3)(0.0f))) return (float4)(org, tmin);
+  return (float4)(rc_leave(org, o->ng, dir, tmin), RC_TMIN_OFF);
 }
 
 static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
@@ -147,8 +166,7 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
   rc_out_reserve(o, 1u, 0u);
   if (o->write) {
     rc_shadow s;
-    s.org =
-        tmin > 0.0f ? (float4)(rc_leave(org, o->ng, dir, tmin), RC_TMIN_OFF) : (float4)(org, tmin);
+    s.org = rc_leave_org(o, org, dir, tmin);
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
     s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
@@ -204,8 +222,7 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
   rc_out_reserve(o, 0u, 1u);
   if (o->write) {
     rc_ray r;
-    r.org =
-        tmin > 0.0f ? (float4)(rc_leave(org, o->ng, dir, tmin), RC_TMIN_OFF) : (float4)(org, tmin);
+    r.org = rc_leave_org(o, org, dir, tmin);
     r.dir = (float4)(dir, INFINITY);
     r.coef = (float4)(parent->coef.xyz * coef, weight);
     r.primary = parent->primary;
@@ -778,7 +795,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   h.uv.z = r.dist0;
   h.uv.w = 0.0f;
   o->dist = r.dist0 + fmax(h.pos.w, 0.0f);
-  o->ng = h.nrm.xyz;
+  o->ng = h.surface == RC_SURF_IRRADIANCE ? (float3)(0.0f) : h.nrm.xyz; /* a meter: no surface */
   /* The host writes a hit's list of leaking records into nrm.w's bits (1 + its offset). */
   uint leaks = as_uint(h.nrm.w);
   if (leaks != 0u) o->blocked = S->amb_blocked + (leaks - 1u);

@@ -24,8 +24,9 @@ struct AnalyticSurface {
 };
 
 // Validates and converts `o` (a sphere, bubble, cone, cup, cylinder, tube or ring). Throws
-// FatalError for bad argument counts and illegal radii; warns for negative radii. Returns
-// nullopt (after Radiance's warning) for a cone without orientation.
+// FatalError for bad argument counts and negative ring radii; warns for other negative radii.
+// Returns nullopt (after Radiance's warning) for degenerate surfaces: zero or illegal radii,
+// no orientation.
 std::optional<AnalyticSurface> make_analytic(const scene::Object& o, std::int32_t index);
 
 // Re-expresses the surface relative to `origin`.
@@ -35,8 +36,11 @@ void shift(AnalyticSurface& s, const Vec3& origin);
 std::array<Vec3, 2> analytic_bounds(const AnalyticSurface& s);
 
 // First intersection of o + t d with tmin < t < tmax (d need not be unit; t is parametric).
-// On a hit, sets t and the unit normal in Radiance's orientation.
+// On a hit, sets t and the unit normal in Radiance's orientation. An origin within `on`
+// (distance) of the surface lies on it: the root there is the origin itself, never a hit (a
+// ray leaving a sphere outwards, or a ring, cannot meet it again; inwards it meets the far
+// side). This is what keeps rays from float-rounded surface points off their own surface.
 bool intersect_analytic(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin,
-                        double tmax, double& t, Vec3& n);
+                        double tmax, double& t, Vec3& n, double on = 0);
 
 } // namespace radcl::geometry

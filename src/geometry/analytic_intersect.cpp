@@ -22,17 +22,25 @@ int roots(double a, double b, double c, double disc, double r[2]) {
   }
   r[0] = q / a;
   r[1] = c / q;
+  // |q / a| is the larger root's size. Where q is tiny (a ray tangent to the surface at its
+  // start), c / q is rounding noise over rounding noise (a ray leaving a sphere along its
+  // tangent plane "hit" it at t = 1): then the direct form is the precise one.
+  if (!(std::abs(r[1]) <= std::abs(r[0]))) r[1] = (std::copysign(std::sqrt(disc), b) - b) / a;
   if (r[0] > r[1]) std::swap(r[0], r[1]);
   return 2;
 }
 
 bool sphere(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin, double tmax,
-            double& t, Vec3& n) {
+            double& t, Vec3& n, double on) {
   const Vec3 f = sub(o, s.c);
   const double a = dot(d, d), b = dot(f, d);
   const Vec3 l = madd(f, d, -b / a); // closest approach to the centre
-  const double disc = a * (s.r0 - length(l)) * (s.r0 + length(l));
-  const double c = dot(f, f) - s.r0 * s.r0;
+  double disc = a * (s.r0 - length(l)) * (s.r0 + length(l));
+  double c = dot(f, f) - s.r0 * s.r0;
+  if (std::abs(length(f) - s.r0) <= on) { // the origin is on the sphere: roots 0 and -2b/a
+    c = 0;
+    disc = b * b;
+  }
   double r[2];
   const int nr = roots(a, b, c, disc, r);
   for (int i = 0; i < nr; ++i) {
@@ -48,7 +56,7 @@ bool sphere(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin,
 // Cones and cylinders: points at height h along the axis from the small end lie at distance
 // r0 + k h from it, k = (r1 - r0) / length.
 bool cone(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin, double tmax,
-          double& t, Vec3& n) {
+          double& t, Vec3& n, double on) {
   const Vec3 f = sub(o, s.c);
   const double k = (s.r1 - s.r0) / s.length;
   const double h0 = dot(f, s.axis), hd = dot(d, s.axis);
@@ -56,7 +64,10 @@ bool cone(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin, d
   const double rr = s.r0 + k * h0;
   const double a = dot(qd, qd) - k * k * hd * hd;
   const double b = dot(q0, qd) - rr * k * hd;
-  const double c = dot(q0, q0) - rr * rr;
+  double c = dot(q0, q0) - rr * rr;
+  // The origin on the side (within `on`, measured across the axis): one root is 0.
+  const bool on_side = std::abs(length(q0) - rr) <= on && h0 >= -on && h0 <= s.length + on;
+  if (on_side) c = 0;
   double r[2];
   int nr = 0;
   if (std::abs(a) <= 1e-12 * dot(d, d)) { // along the side (cone) or the axis (cylinder)
@@ -65,7 +76,7 @@ bool cone(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin, d
     nr = 1;
   } else {
     double disc = b * b - a * c;
-    if (k == 0) { // cylinder: from the closest approach to the axis, as for spheres
+    if (k == 0 && !on_side) { // cylinder: from the closest approach to the axis, as for spheres
       const double l = length(madd(q0, qd, -b / a));
       disc = a * (rr - l) * (rr + l);
     }
@@ -87,10 +98,11 @@ bool cone(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin, d
 }
 
 bool ring(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin, double tmax,
-          double& t, Vec3& n) {
+          double& t, Vec3& n, double on) {
   const double den = dot(d, s.axis);
   if (std::abs(den) <= kParallel * length(d)) return false;
   const Vec3 f = sub(o, s.c);
+  if (std::abs(dot(f, s.axis)) <= on) return false; // starts in the ring's plane
   const double tt = -dot(f, s.axis) / den;
   if (!(tt > tmin && tt < tmax)) return false;
   const Vec3 p = madd(f, d, tt);
@@ -105,14 +117,14 @@ bool ring(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin, d
 } // namespace
 
 bool intersect_analytic(const AnalyticSurface& s, const Vec3& o, const Vec3& d, double tmin,
-                        double tmax, double& t, Vec3& n) {
+                        double tmax, double& t, Vec3& n, double on) {
   switch (s.shape) {
   case Shape::Sphere:
-    return sphere(s, o, d, tmin, tmax, t, n);
+    return sphere(s, o, d, tmin, tmax, t, n, on);
   case Shape::Cone:
-    return cone(s, o, d, tmin, tmax, t, n);
+    return cone(s, o, d, tmin, tmax, t, n, on);
   case Shape::Ring:
-    return ring(s, o, d, tmin, tmax, t, n);
+    return ring(s, o, d, tmin, tmax, t, n, on);
   }
   return false;
 }

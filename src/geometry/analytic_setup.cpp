@@ -1,6 +1,9 @@
-// Argument checks and conversions for quadric surfaces, following Radiance's rules: negative
-// radii flip sphere<->bubble, cone<->cup, cylinder<->tube with a warning; equal cone radii make
-// a cylinder; zero radii and equal ring radii are illegal.
+// Argument checks and conversions for quadric surfaces, following Radiance 5.4a's rules
+// (oconv's sphere.c, common/cone.c): negative radii flip sphere<->bubble, cone<->cup,
+// cylinder<->tube with a warning; equal cone radii make a cylinder. Degenerate surfaces are
+// ignored with a warning: a zero sphere radius ("zero radius"), a zero cylinder radius, cone
+// radii that are both zero (or of opposite signs) and equal ring radii ("illegal radii"), a
+// zero axis ("unknown orientation"). A negative ring radius is fatal ("negative radii").
 #include <cmath>
 #include <string>
 
@@ -59,7 +62,8 @@ std::optional<AnalyticSurface> make_analytic(const scene::Object& o, std::int32_
       s.type = flipped(o.type);
       r = -r;
     } else if (r <= kTiny) {
-      throw FatalError("zero radius" + about(o, o.type));
+      warning("zero radius" + about(o, o.type));
+      return std::nullopt;
     }
     s.shape = Shape::Sphere;
     s.c = {f[0], f[1], f[2]};
@@ -76,7 +80,8 @@ std::optional<AnalyticSurface> make_analytic(const scene::Object& o, std::int32_
       s.type = flipped(o.type);
       r = -r;
     } else if (r <= kTiny) {
-      throw FatalError("illegal radii" + about(o, o.type));
+      warning("illegal radii" + about(o, o.type));
+      return std::nullopt;
     }
     s.r0 = s.r1 = r;
     s.c = {f[0], f[1], f[2]};
@@ -88,9 +93,12 @@ std::optional<AnalyticSurface> make_analytic(const scene::Object& o, std::int32_
   case RC_OBJ_RING: {
     need(8);
     const int s0 = sign(f[6]), s1 = sign(f[7]);
-    if (s0 + s1 == 0) throw FatalError("illegal radii" + about(o, o.type));
+    if (s0 + s1 == 0) { // both zero, or opposite signs (Radiance tests this first)
+      warning("illegal radii" + about(o, o.type));
+      return std::nullopt;
+    }
     if (s0 < 0 || s1 < 0) {
-      if (o.type == RC_OBJ_RING) throw FatalError("illegal radii" + about(o, o.type));
+      if (o.type == RC_OBJ_RING) throw FatalError("negative radii" + about(o, o.type));
       warning("negative radii" + about(o, o.type));
       s.type = flipped(o.type);
     }
@@ -98,7 +106,10 @@ std::optional<AnalyticSurface> make_analytic(const scene::Object& o, std::int32_
     const double ra = std::abs(f[6]) * (s0 != 0), rb = std::abs(f[7]) * (s1 != 0);
     const Vec3 pa{f[0], f[1], f[2]}, pb{f[3], f[4], f[5]};
     if (o.type == RC_OBJ_RING) {
-      if (std::abs(ra - rb) <= kTiny) throw FatalError("illegal radii" + about(o, o.type));
+      if (std::abs(ra - rb) <= kTiny) {
+        warning("illegal radii" + about(o, o.type));
+        return std::nullopt;
+      }
       s.shape = Shape::Ring;
       s.c = pa;
       s.r0 = std::min(ra, rb);

@@ -201,7 +201,10 @@ private:
     g_.world_bounds = b;
     g_.centre = scale(add(b[0], b[1]), 0.5);
     const double diag = length(sub(b[1], b[0]));
-    if (g_.eps <= 0) g_.eps = std::max(1e-30, 1e-7 * diag);
+    if (g_.eps <= 0) { // Radiance's FTINY, relative in small models, widened far from the centre
+      g_.eps = std::max(1e-30, std::min(1e-6, 1e-7 * diag));
+      g_.eps_rel = 1e-7;
+    }
     g_.margin = 1e-5 * diag + 1e-30;
   }
 

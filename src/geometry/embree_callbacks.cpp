@@ -52,9 +52,14 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
   float& tfar = RTCRayN_tfar(ray, args->N, 0);
   double t;
   Vec3 n;
-  if (!intersect_analytic(proto->analytic[args->primID], lr.o, lr.d, rc->tmin,
-                          std::min(rc->tmax, static_cast<double>(tfar)), t, n))
-    return;
+  // Embree's tfar is the closest hit rounded to float; the exact one decides, ties included.
+  const double bound = std::min(rc->tmax, rc->best ? std::nextafter(rc->best_t, INFINITY)
+                                                   : static_cast<double>(tfar));
+  const AnalyticSurface& s = proto->analytic[args->primID];
+  if (!intersect_analytic(s, lr.o, lr.d, rc->tmin, bound, t, n, rc->on * length(lr.d))) return;
+  const std::uint64_t key = tie_key(inst, static_cast<std::uint32_t>(s.object));
+  if (rc->loses(t, key)) return;
+  rc->accept(t, key);
   tfar = static_cast<float>(t);
   RTCHitN_Ng_x(hit, args->N, 0) = static_cast<float>(n[0]);
   RTCHitN_Ng_y(hit, args->N, 0) = static_cast<float>(n[1]);
@@ -81,7 +86,8 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
   double t;
   Vec3 n;
   if (intersect_analytic(proto->analytic[args->primID], lr.o, lr.d, rc->tmin,
-                         std::min(rc->tmax, static_cast<double>(tfar)), t, n))
+                         std::min(rc->tmax, static_cast<double>(tfar)), t, n,
+                         rc->on * length(lr.d)))
     tfar = -std::numeric_limits<float>::infinity();
 }
 
@@ -90,15 +96,30 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
 // from hitting it again.
 void triangle_filter(const RTCFilterFunctionNArguments* args) {
   if (args->valid[0] == 0) return;
-  const auto* rc = reinterpret_cast<const RayContext*>(args->context);
+  auto* rc = reinterpret_cast<RayContext*>(args->context);
   const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
   const unsigned inst = RTCHitN_instID(args->hit, args->N, 0, 0);
   const unsigned prim = RTCHitN_primID(args->hit, args->N, 0);
   const LocalRay lr = local_ray(*rc, inst);
   double t;
   Vec3 n;
-  if (!triangle_distance(*proto, prim, lr.o, lr.d, t, n) || !(t > rc->tmin && t < rc->tmax))
+  // A ray whose origin lies in the triangle's plane (within rc->on) cannot meet it again.
+  if (!triangle_distance(*proto, prim, lr.o, lr.d, t, n) || !(t > rc->tmin && t < rc->tmax) ||
+      std::abs(t * dot(n, lr.d)) <= rc->on * length(lr.d)) {
     args->valid[0] = 0;
+    return;
+  }
+  const std::uint32_t object =
+      proto->mesh != nullptr
+          ? proto->mesh_triangle[prim]
+          : static_cast<std::uint32_t>(proto->polygons[proto->triangle_polygon[prim]].object);
+  const std::uint64_t key = tie_key(inst, object);
+  if (rc->closest && rc->loses(t, key)) {
+    args->valid[0] = 0;
+    return;
+  }
+  // Occlusion queries stop at any hit; only closest-hit queries keep the best.
+  if (rc->closest) rc->accept(t, key);
 }
 
 } // namespace radcl::geometry

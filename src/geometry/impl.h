@@ -74,7 +74,8 @@ struct SceneGeometry::Impl {
   std::vector<int> top_geom_placement; // top-level geomID -> placement (instances only)
   std::array<Vec3, 2> world_bounds{};
   Vec3 centre{};
-  double eps = 1e-6;
+  double eps = 1e-6;    // nearest hit a query accepts, at least
+  double eps_rel = 0;   // and this times the ray origin's largest centred coordinate
   double margin = 1e-6; // slack for Embree's float distances
   SurfaceCounts counts;
   std::vector<DistantSource> sources;
@@ -94,12 +95,37 @@ struct RayContext {
   const SceneGeometry::Impl* impl = nullptr;
   Vec3 org{}, dir{}; // world, dir unit
   double tmin = 0, tmax = 0;
+  // An origin this close (world distance) to a surface lies on it (float rounding of the point
+  // the ray leaves): that surface is not met again at the origin (intersect_analytic).
+  double on = 0;
   // Last user-geometry hit accepted (exact values for the final answer).
   bool user_hit = false;
   unsigned inst = RTC_INVALID_GEOMETRY_ID, geom = RTC_INVALID_GEOMETRY_ID, prim = 0;
   double t = 0;
   Vec3 normal{};
+  // The hit accepted last (the current closest), exact: surfaces met at exactly the same
+  // distance go to the lower key (outer instance, then object number), as Radiance keeps the
+  // first of them it tests, whatever order Embree offers them in.
+  bool best = false;
+  double best_t = 0;
+  std::uint64_t best_key = 0;
+  bool closest = false; // a closest-hit query (not an occlusion test)
+  // Whether a candidate at exact distance cand_t loses to the current closest hit.
+  bool loses(double cand_t, std::uint64_t key) const {
+    return best && (cand_t > best_t || (cand_t == best_t && key > best_key));
+  }
+  void accept(double cand_t, std::uint64_t key) {
+    best = true;
+    best_t = cand_t;
+    best_key = key;
+  }
 };
+
+// Order of surfaces for ties: main scene first, then instances by Embree id; within one, by
+// object number (a mesh: by triangle).
+inline std::uint64_t tie_key(unsigned inst, std::uint32_t object) {
+  return (static_cast<std::uint64_t>(inst + 1u) << 32) | object;
+}
 
 // Collects the visible leaf surfaces (polygons and quadrics) of `desc`; `all` keeps surfaces
 // without a material (inside an instance whose own modifier shades them).

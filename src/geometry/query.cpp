@@ -4,6 +4,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -21,12 +22,21 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
   if (!(l > 0) || !std::isfinite(l)) return false;
   rc.org = org;
   rc.dir = scale(dir, 1 / l);
-  // A negative tmin: the origin is already off every surface (moved beside the one it leaves),
-  // so no hit is skipped; else hits nearer than the scene's epsilon are.
-  rc.tmin = tmin < 0 ? 0.0 : std::max(tmin, g.eps);
+  const Vec3 o = sub(org, g.centre);
+  const double reach = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
+  if (tmin < 0) {
+    // The origin was moved off the surface it leaves (RC_TMIN_OFF): nothing is skipped, and no
+    // surface counts as holding the origin.
+    rc.tmin = 0;
+    rc.on = 0;
+  } else {
+    rc.tmin = std::max(tmin, std::max(g.eps, g.eps_rel * reach));
+    // Points handed over in float relative to the centre are off their surface by up to three
+    // half units in the last place of their largest coordinate.
+    rc.on = 4e-7 * reach + 1e-12;
+  }
   rc.tmax = tmax;
   if (!(rc.tmax > rc.tmin)) return false;
-  const Vec3 o = sub(org, g.centre);
   ray.org_x = static_cast<float>(o[0]);
   ray.org_y = static_cast<float>(o[1]);
   ray.org_z = static_cast<float>(o[2]);
@@ -52,6 +62,7 @@ std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, 
   RayContext rc;
   RTCRayHit rh;
   if (!setup(g, org, dir, tmin, tmax, rc, rh.ray)) return std::nullopt;
+  rc.closest = true;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(g.top, &rc.ctx, &rh);

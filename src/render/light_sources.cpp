@@ -217,7 +217,8 @@ private:
     double r0 = std::abs(o.fargs[6]) <= kTiny ? 0 : std::abs(o.fargs[6]);
     double r1 = std::abs(o.fargs[7]) <= kTiny ? 0 : std::abs(o.fargs[7]);
     if (r0 > r1) std::swap(r0, r1);
-    if (r1 <= kTiny) throw FatalError(about(o, "illegal source radius"));
+    // A ring Radiance's getcone() rejects (equal radii, both zero) is no source at all.
+    if (r1 - r0 <= kTiny) throw FatalError(about(o, "illegal source"));
     if (r0 > 0) throw FatalError(about(o, "cannot hit source center"));
     s.kind = RC_SRC_FLAT;
     s.pos = f4(local(arg3(o.fargs, 0)), r1);
@@ -232,8 +233,7 @@ private:
     const V3 p0 = arg3(o.fargs, 0), p1 = arg3(o.fargs, 3);
     const double r = std::abs(o.fargs[6]); // a negative radius only turns the normal inward
     const double l = length(sub(p1, p0));
-    if (l == 0) throw FatalError(about(o, "illegal source"));
-    if (r <= kTiny) throw FatalError(about(o, "illegal source radius"));
+    if (l == 0 || r <= kTiny) throw FatalError(about(o, "illegal source")); // getcone() fails
     if (r > 0.2 * l) warning(about(o, "source aspect too small"));
     s.kind = RC_SRC_CYLINDER;
     s.pos = f4(local(scale(add(p0, p1), 0.5)), r);

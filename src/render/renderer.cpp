@@ -158,11 +158,10 @@ struct Renderer::Impl {
     rc_params p{};
     p.av = f4(st.av[0], st.av[1], st.av[2], st.lw);
     p.direct = f4(st.ds, st.dj, st.dt, st.dc);
-    // Rays leave surfaces this far along; the kernels work in float, so never below what
-    // float resolves at the scene's size.
-    auto b = geom.bounds();
-    double size = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2], 1e-3});
-    p.spec = f4(st.ss, st.st, std::max(geom.epsilon(), 4e-7 * size), 0);
+    // Rays leave surfaces at least this far along; the kernels widen it where a point's float
+    // coordinates are coarser (rc_leave in shade.cl), so small detail near the centre of a
+    // huge scene is not skipped.
+    p.spec = f4(st.ss, st.st, geom.epsilon(), 0);
     p.seed = st.seed;
     p.lr = st.lr;
     p.flags = (st.dv ? RC_PF_DV : 0u) | (st.bv ? RC_PF_BV : 0u) |
@@ -207,8 +206,13 @@ struct Renderer::Impl {
     float weight = 1;
     float dist0 = 0; // the ray tree's length before it: the record's point is its parent's hit
   };
-  rc_params base{};                 // the uploaded parameters, amb.w aside
-  double ray_eps = 0;               // where secondary rays start
+  rc_params base{};   // the uploaded parameters, amb.w aside
+  double ray_eps = 0; // the least distance rays leave surfaces by (spec.z)
+  // How far off a surface a ray leaving point p (re-centred) starts, as the kernels' rc_leave:
+  // never less than p's float coordinates resolve.
+  double leave_dist(double x, double y, double z) const {
+    return std::max(ray_eps, 8e-7 * std::max({std::fabs(x), std::fabs(y), std::fabs(z)}));
+  }
   bool building = false;            // misses become records
   bool collecting = false;          // this pass reports misses (amb.w = 1)
   int nesting = 0;                  // > 0 while a record's samples are rendered
@@ -493,8 +497,9 @@ struct Renderer::Impl {
       const std::uint32_t rec = next_sample_id++;
       rc_rng_key key = rc_make_key(rec, 0x616d62u, 0, settings.seed);
       // The samples leave from beside the surface (as the kernels' rays: rc_leave).
-      const Vec3d o = {m->org.x + centre[0] + ray_eps * n[0], m->org.y + centre[1] + ray_eps * n[1],
-                       m->org.z + centre[2] + ray_eps * n[2]};
+      const double lv = leave_dist(m->org.x, m->org.y, m->org.z);
+      const Vec3d o = {m->org.x + centre[0] + lv * n[0], m->org.y + centre[1] + lv * n[1],
+                       m->org.z + centre[2] + lv * n[2]};
       for (int i = 0; i < ns; ++i)
         for (int j = 0; j < ns; ++j) {
           const std::uint32_t dim = 2u * static_cast<std::uint32_t>(i * ns + j);
@@ -1067,8 +1072,9 @@ struct Renderer::Impl {
     auto segment_blocked = [&](const std::array<double, 3>& o, const std::array<double, 3>& d,
                                double tmax, const std::array<double, 3>& n) {
       // From beside the surface, as the kernels' rays leave it (rc_leave).
-      Vec3d org = {o[0] + centre[0] + eps * n[0], o[1] + centre[1] + eps * n[1],
-                   o[2] + centre[2] + eps * n[2]};
+      const double lv = leave_dist(o[0], o[1], o[2]);
+      Vec3d org = {o[0] + centre[0] + lv * n[0], o[1] + centre[1] + lv * n[1],
+                   o[2] + centre[2] + lv * n[2]};
       const Vec3d dir = {d[0], d[1], d[2]};
       double t0 = RC_TMIN_OFF;
       for (int k = 0; k < 64; ++k) { // void surfaces are passed, as Radiance passes them

@@ -78,8 +78,9 @@ TEST(Cylinder, TubeAndNegativeRadius) {
   EXPECT_FALSE(h->front);
   auto neg = one(RC_OBJ_CYLINDER, {0, 0, 0, 0, 0, 2, -1});
   EXPECT_EQ(neg.counts().tubes, 1u);
-  EXPECT_EQ(fatal_message(RC_OBJ_CYLINDER, {0, 0, 0, 0, 0, 2, 0}),
-            "illegal radii for cylinder \"s\"");
+  // Radiance 5.4a ignores a zero radius with a warning (common/cone.c).
+  EXPECT_EQ(fatal_message(RC_OBJ_CYLINDER, {0, 0, 0, 0, 0, 2, 0}), "");
+  EXPECT_EQ(one(RC_OBJ_CYLINDER, {0, 0, 0, 0, 0, 2, 0}).counts().skipped_degenerate, 1u);
   EXPECT_EQ(fatal_message(RC_OBJ_CYLINDER, {0, 0, 0, 0, 0, 2}),
             "bad # arguments for cylinder \"s\"");
 }
@@ -129,11 +130,18 @@ TEST(Cone, EqualRadiiIsCylinder) {
   EXPECT_EQ(cup.counts().tubes, 1u);
 }
 
+// Radiance 5.4a (common/cone.c): illegal radii are a warning and the surface is ignored;
+// a negative ring radius is fatal.
 TEST(Cone, IllegalRadii) {
-  EXPECT_EQ(fatal_message(RC_OBJ_CONE, {0, 0, 0, 0, 0, 1, 0, 0}), "illegal radii for cone \"s\"");
-  EXPECT_EQ(fatal_message(RC_OBJ_CONE, {0, 0, 0, 0, 0, 1, 1, -1}), "illegal radii for cone \"s\"");
-  EXPECT_EQ(fatal_message(RC_OBJ_RING, {0, 0, 0, 0, 0, 1, 1, 1}), "illegal radii for ring \"s\"");
-  EXPECT_EQ(fatal_message(RC_OBJ_RING, {0, 0, 0, 0, 0, 1, -1, 2}), "illegal radii for ring \"s\"");
+  for (const auto& [type, args] : std::vector<std::pair<scene::ObjectType, std::vector<double>>>{
+           {RC_OBJ_CONE, {0, 0, 0, 0, 0, 1, 0, 0}},
+           {RC_OBJ_CONE, {0, 0, 0, 0, 0, 1, 1, -1}},
+           {RC_OBJ_RING, {0, 0, 0, 0, 0, 1, 1, 1}},
+           {RC_OBJ_RING, {0, 0, 0, 0, 0, 1, -1, 2}}}) {
+    EXPECT_EQ(fatal_message(type, args), "");
+    EXPECT_EQ(one(type, args).counts().skipped_degenerate, 1u);
+  }
+  EXPECT_EQ(fatal_message(RC_OBJ_RING, {0, 0, 0, 0, 0, 1, -1, 0}), "negative radii for ring \"s\"");
 }
 
 TEST(Ring, DiscAndAnnulus) {

@@ -77,8 +77,9 @@ struct SurfaceCounts {
 
 struct GeometryOptions {
   // Hits closer than this (world distance) are ignored so that rays leaving a surface do not
-  // hit it again. 0: automatic, 1e-7 x the scene diagonal (relative, so a model in mm or km
-  // units behaves as in m).
+  // hit it again. 0: automatic, Radiance's FTINY (1e-6) but at most 1e-7 x the scene diagonal
+  // (so that a model in km units behaves as in m), and at least 1e-7 x the largest coordinate
+  // of the ray's origin relative to the scene's centre (float rounding far from it).
   double epsilon = 0;
 };
 
