@@ -54,8 +54,8 @@ rc_float4 f4(double x, double y, double z, double w) {
 class Flattener {
 public:
   Flattener(const std::vector<rc_amb_record>& in, const std::vector<std::uint32_t>& corral,
-            AmbientCacheBuffers& out)
-      : in_(in), corral_(corral), out_(out) {}
+            const std::vector<std::uint32_t>& source, AmbientCacheBuffers& out)
+      : in_(in), corral_(corral), source_(source), out_(out) {}
 
   // Appends `node` (whose box is `box`) and its subtree.
   void add(const Node* node, const RTCBounds& box) {
@@ -71,6 +71,7 @@ public:
       for (unsigned i = 0; i < l->n; ++i) {
         out_.records.push_back(in_[l->ids[i]]);
         out_.corral.push_back(corral_[l->ids[i]]);
+        out_.source.push_back(source_[l->ids[i]]);
       }
     } else {
       const Inner* in = static_cast<const Inner*>(node);
@@ -83,6 +84,7 @@ public:
 private:
   const std::vector<rc_amb_record>& in_;
   const std::vector<std::uint32_t>& corral_;
+  const std::vector<std::uint32_t>& source_;
   AmbientCacheBuffers& out_;
 };
 
@@ -103,9 +105,10 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
                                         const std::array<double, 3>& centre, double aa) {
   AmbientCacheBuffers out;
   std::vector<rc_amb_record> recs;
-  std::vector<std::uint32_t> corral;
+  std::vector<std::uint32_t> corral, source;
   std::vector<RTCBuildPrimitive> prims;
-  for (const ambient::AmbientRecord& r : records) {
+  for (std::size_t ri = 0; ri < records.size(); ++ri) {
+    const ambient::AmbientRecord& r = records[ri];
     if (!(r.rad[0] > 0) || !(r.rad[1] > 0)) continue;
     const auto n = ambient::decode_dir(r.ndir), u = ambient::decode_dir(r.udir);
     const double p[3] = {r.pos[0] - centre[0], r.pos[1] - centre[1], r.pos[2] - centre[2]};
@@ -136,6 +139,7 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
     prims.push_back(b);
     recs.push_back(a);
     corral.push_back(r.corral);
+    source.push_back(static_cast<std::uint32_t>(ri));
   }
   if (recs.empty()) return out;
 
@@ -181,7 +185,8 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
   }
   out.records.reserve(recs.size());
   out.corral.reserve(recs.size());
-  Flattener(recs, corral, out).add(static_cast<const Node*>(root), all);
+  out.source.reserve(recs.size());
+  Flattener(recs, corral, source, out).add(static_cast<const Node*>(root), all);
   rtcReleaseBVH(bvh);
   rtcReleaseDevice(dev);
   if (out.records.size() != recs.size())

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace radcl::render {
 namespace {
@@ -55,8 +56,9 @@ float corral_atan2a(float y, float x) {
   return atan_poly(y, x);
 }
 
-LeakTester::LeakTester(const AmbientCacheBuffers* cache, float aa, float minarad)
-    : cache_(cache), aa_(aa), minarad_(minarad) {
+LeakTester::LeakTester(const AmbientCacheBuffers* cache, float aa, float minarad,
+                       std::vector<std::uint32_t> to_index)
+    : cache_(cache), to_index_(std::move(to_index)), aa_(aa), minarad_(minarad) {
   for (std::uint32_t c : cache->corral)
     marked_ += c != 0;
 }
@@ -143,7 +145,7 @@ std::size_t LeakTester::find(const LeakLookup& q, const SegmentBlocked& segment_
       dt2 += cu * cu + cv * cv;
       if (dt2 >= lim2) continue;
       bool t = false;
-      if (leaks(q, k, segment_blocked, &t)) blocked.push_back(k);
+      if (leaks(q, k, segment_blocked, &t)) blocked.push_back(to_index_.empty() ? k : to_index_[k]);
       traced += t;
     }
     i = nd.skip;

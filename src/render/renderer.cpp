@@ -227,8 +227,9 @@ struct Renderer::Impl {
   std::uint32_t next_sample_id = 0x40000000u;
   std::unique_ptr<RecordMaker> maker; // the record kernel, built when first needed
 
-  // The cache as uploaded (the leak tests walk it on the host) and its leak tester.
-  AmbientCacheBuffers cache;
+  // The cache as uploaded, the same over its corral-marked records only (the leak tests walk
+  // that on the host) and the leak tester.
+  AmbientCacheBuffers cache, marked;
   LeakTester leak_tester;
   // The current render_batch's lists of records whose leak test failed, per hit: [count,
   // index...]; a hit names its list in nrm.w (docs/ambient.md).
@@ -240,10 +241,29 @@ struct Renderer::Impl {
     if (uses_cache(settings)) cache = build_ambient_cache(cache_local, {0, 0, 0}, settings.aa);
     // RADCL_LEAK_TEST=0 leaves the leak test out (to measure what it costs and changes).
     const char* lt = std::getenv("RADCL_LEAK_TEST");
-    leak_tester = lt && std::string(lt) == "0"
-                      ? LeakTester()
-                      : LeakTester(&cache, static_cast<float>(settings.aa),
-                                   static_cast<float>(settings.ambient_min_radius));
+    marked = AmbientCacheBuffers{};
+    leak_tester = LeakTester();
+    if (!(lt && std::string(lt) == "0") && !cache.records.empty()) {
+      // The marked records, built into a tree of their own, named by their index in `cache`.
+      std::vector<std::uint32_t> leaf_of(cache_local.size(), 0), subset;
+      std::vector<ambient::AmbientRecord> recs;
+      for (std::size_t k = 0; k < cache.source.size(); ++k)
+        leaf_of[cache.source[k]] = static_cast<std::uint32_t>(k);
+      for (std::size_t i = 0; i < cache_local.size(); ++i)
+        if (cache_local[i].corral) {
+          subset.push_back(static_cast<std::uint32_t>(i));
+          recs.push_back(cache_local[i]);
+        }
+      if (!recs.empty()) {
+        marked = build_ambient_cache(recs, {0, 0, 0}, settings.aa);
+        std::vector<std::uint32_t> to_full(marked.source.size());
+        for (std::size_t j = 0; j < to_full.size(); ++j)
+          to_full[j] = leaf_of[subset[marked.source[j]]];
+        leak_tester =
+            LeakTester(&marked, static_cast<float>(settings.aa),
+                       static_cast<float>(settings.ambient_min_radius), std::move(to_full));
+      }
+    }
     base.amb.z = static_cast<float>(cache.nodes.size());
     if (settings.aw > 0 && uses_cache(settings)) {
       auto v = averaged_ambient_value({settings.av[0], settings.av[1], settings.av[2]}, settings.aw,
@@ -1153,19 +1173,29 @@ struct Renderer::Impl {
     hits.resize(n);
     for (std::size_t i = 0; i < n; ++i)
       hits[i] = to_device(rays[i], gh[i]);
-    // The first hit's mirror reflection: how far it went, for rtrace's R and l.
+    // The first hit's mirror reflection: how far it went, for rtrace's R and l. Measured from
+    // the surface point it left (its ray starts just beside it: rc_leave).
+    auto dist = [](const Vec3d& a, const Vec3d& b) {
+      return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                       (a[2] - b[2]) * (a[2] - b[2]));
+    };
     for (std::size_t i = 0; i < n; ++i)
       if ((queue[i].flags & RC_RAY_MIRRORED) &&
-          (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED && queue[i].depth == 1)
-        results[slot(queue[i].primary)].mirror_t = (queue[i].flags & RC_RAY_TILTED) ? 0.0
-                                                   : gh[i]                          ? gh[i]->t
-                                                                                    : 1e10;
-    // The straight continuation through transmitting surfaces: its lengths add up (X).
+          (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED && queue[i].depth == 1) {
+        PrimaryResult& pr = results[slot(queue[i].primary)];
+        pr.mirror_t = (queue[i].flags & RC_RAY_TILTED) ? 0.0
+                      : gh[i]                          ? dist(gh[i]->point, pr.point)
+                                                       : 1e10;
+      }
+    // The straight continuation through transmitting surfaces: its lengths add up (X), each
+    // from the surface point the last one met.
     for (std::size_t i = 0; i < n; ++i)
       if ((queue[i].flags & RC_RAY_THROUGH) &&
           (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_TRANSMITTED) {
-        double& t = results[slot(queue[i].primary)].through_t;
-        t = std::max(t, 0.0) + (gh[i] ? gh[i]->t : 1e10);
+        PrimaryResult& pr = results[slot(queue[i].primary)];
+        const Vec3d& from = pr.through_t < 0 ? pr.point : pr.through_at;
+        pr.through_t = std::max(pr.through_t, 0.0) + (gh[i] ? dist(gh[i]->point, from) : 1e10);
+        if (gh[i]) pr.through_at = gh[i]->point;
       }
     if (!primaries) return;
     for (std::size_t i = 0; i < n; ++i) {

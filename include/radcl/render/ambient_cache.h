@@ -17,6 +17,7 @@ struct AmbientCacheBuffers {
   std::vector<rc_amb_record> records; // in leaf order
   std::vector<rc_amb_node> nodes;     // depth first; empty when there are no records
   std::vector<std::uint32_t> corral;  // each record's corral bits, in leaf order (host only)
+  std::vector<std::uint32_t> source;  // each record's index in the input span (host only)
 };
 
 // `centre`: the scene's re-centring origin; `aa`: -aa (a record covers points within aa times

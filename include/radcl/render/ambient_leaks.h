@@ -34,13 +34,17 @@ class LeakTester {
 public:
   LeakTester() = default;
   // `cache` must outlive the tester; `aa` is -aa, `minarad` Radiance's minimum radius.
-  LeakTester(const AmbientCacheBuffers* cache, float aa, float minarad);
+  // `to_index` (if not empty) maps cache's records to the indices reported: the tester may walk
+  // a cache of the marked records only, naming them by their place in the full one.
+  LeakTester(const AmbientCacheBuffers* cache, float aa, float minarad,
+             std::vector<std::uint32_t> to_index = {});
 
   // Whether any record has corral bits (else no lookup needs a test).
   bool active() const { return marked_ > 0; }
 
-  // Appends to `blocked` the (leaf-order) indices of the marked records the kernel could
-  // accept at `q` whose test ray is blocked; returns how many test rays were traced.
+  // Appends to `blocked` the indices (leaf order, or to_index's) of the marked records the
+  // kernel could accept at `q` whose test ray is blocked; returns how many test rays were
+  // traced.
   std::size_t find(const LeakLookup& q, const SegmentBlocked& segment_blocked,
                    std::vector<std::uint32_t>& blocked) const;
 
@@ -51,6 +55,7 @@ public:
 
 private:
   const AmbientCacheBuffers* cache_ = nullptr;
+  std::vector<std::uint32_t> to_index_;
   float aa_ = 0, minarad_ = 0;
   std::size_t marked_ = 0;
 };

@@ -100,15 +100,16 @@ struct PrimaryResult {
   // texture-tilted normal, so the image lies at the surface), -1: none.
   double mirror_t = -1;
   double through_t = -1; // length of the straight transmission beyond the first hit, -1: none
+  Vec3d through_at{};    // where that transmission last met a surface (its lengths add up)
   std::vector<TracedRay> traced; // trace mode: the tree in post-order (children first)
 };
 
 // Rays traced so far (what Embree was asked), for reports and benchmarks.
 struct RenderStats {
-  std::uint64_t primary = 0;   // first-wave rays (not counted for -I meters)
-  std::uint64_t secondary = 0; // reflected, transmitted, specular and ambient rays
-  std::uint64_t shadow = 0;    // shadow-ray segments (one per surface passed)
-  std::uint64_t records = 0;   // irradiance-cache records made
+  std::uint64_t primary = 0;    // first-wave rays (not counted for -I meters)
+  std::uint64_t secondary = 0;  // reflected, transmitted, specular and ambient rays
+  std::uint64_t shadow = 0;     // shadow-ray segments (one per surface passed)
+  std::uint64_t records = 0;    // irradiance-cache records made
   std::uint64_t leak_tests = 0; // cache records' leak-test rays (Radiance's plugaleak)
   std::uint64_t leaks = 0;      // hits at which some record's test ray was blocked
   std::uint64_t total() const { return primary + secondary + shadow; }
