@@ -72,6 +72,11 @@ bool LeakTester::leaks(const LeakLookup& q, std::uint32_t k, const SegmentBlocke
   const V3 p = {q.point[0], q.point[1], q.point[2]}, pos = xyz(a.pos), an = xyz(a.nrm);
   const V3 u = xyz(a.udir), v = cross(an, u);
   const V3 ck = {p[0] - pos[0], p[1] - pos[1], p[2] - pos[2]};
+  // A record at the lookup point itself (made there for a ray that is now shaded again) has no
+  // direction to leak along; Radiance, which never looks a new record up where it made it,
+  // would find a double root below and plug it, so the point would miss again in every round.
+  const double tiny = 1e-6 * std::max({1.0, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])});
+  if (dot(ck, ck) <= tiny * tiny) return false;
   // The sector of the point as seen from the record, in its u, v frame.
   double ang = corral_atan2a(static_cast<float>(dot(ck, v)), static_cast<float>(dot(ck, u)));
   if (ang < 0) ang += 2 * kPi;

@@ -141,3 +141,16 @@ TEST(AmbientLeaks, UnmarkedCacheIsInactive) {
   EXPECT_EQ(t.find(at(0.05f, 0.0f), s.fn(), out), 0u);
   EXPECT_EQ(s.calls, 0);
 }
+
+// A record at the lookup point itself (a ray shaded again where its record was just made) is
+// never a leak: Radiance's test would meet a double root there and plug it.
+TEST(AmbientLeaks, RecordAtThePointIsNoLeak) {
+  std::vector<ambient::AmbientRecord> recs = {record(~0u)};
+  render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);
+  render::LeakTester t(&cache, kAa, kMinarad);
+  Segments s;
+  std::vector<std::uint32_t> out;
+  t.find(at(0.0f, 0.0f), s.fn(), out);
+  EXPECT_TRUE(out.empty());
+  EXPECT_EQ(s.calls, 0);
+}
