@@ -69,7 +69,7 @@ static float rc_amb_lookup(const rc_scene_args* S, float3 p, float3 n, uint al, 
       /* extambient: first-order change with position and with the normal's rotation. */
       float e = 1.0f + dot(ck, a->grad.x * u + a->grad.y * v) +
                 dot(cross(an, n), a->grad.z * u + a->grad.w * v);
-      if (e <= 0.05f) continue;
+      if (!(e > 0.05f)) continue; /* also a non-finite gradient: never poison the sum */
       e = fmin(e, 20.0f);
       float w = rc_amb_hat(maxangle, sqrt(dr2)) * rc_amb_hat(aa, sqrt(dt2));
       sum += a->val.xyz * (e * w);

@@ -237,7 +237,9 @@ static int rc_amr_full(const rc_amb_hemi* hp, global const rc_amb_sample* s, flo
     float2 t = (float2)(0.0f);
     for (uint k = 0; k < ns * ns; ++k) {
       float3 v = rc_amr_local(&f, s[k].pnt.xyz - f.o);
-      t += v.xy * (rc_amr_y(s, k, sc, fl) / v.z);
+      /* A sample met in the tangent plane itself (a direction on the disc's rim, z rounded to
+       * 0) has no finite tangent: it would make the gradient NaN. */
+      if (v.z > 1e-6f * length(v)) t += v.xy * (rc_amr_y(s, k, sc, fl) / v.z);
     }
     dg = (float2)(-dot(u1, t), dot(u0, t)) / n2;
     /* radii no larger than the gradient allows */
