@@ -277,12 +277,7 @@ TEST_F(StabilityDegenerate, HugeGroundWithSmallDetail) {
     const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     rays.push_back({c.p, {n[0] / l, n[1] / l, n[2] / l}, 0});
   }
-  render::RenderSettings st;
-  st.ab = 0;
-  st.dj = 0;
-  st.ds = 0;
-  st.dt = 0;
-  st.irradiance_I = true;
+  render::RenderSettings st = test::direct_light_settings(true);
   auto res = render_rays("g.rad", rays, st);
   for (std::size_t i = 0; i < cases.size(); ++i) {
     ASSERT_TRUE(std::isfinite(res[i].value[0])) << i;
@@ -309,12 +304,7 @@ std::vector<double> far_fin_irradiance(const std::vector<double>& gaps, double& 
   std::vector<render::PrimaryRay> rays;
   for (double g : gaps)
     rays.push_back({{4000 - g, -2999.995, 0}, {0, 0, 1}, 0});
-  render::RenderSettings st;
-  st.ab = 0;
-  st.dj = 0;
-  st.ds = 0;
-  st.dt = 0;
-  st.irradiance_I = true;
+  render::RenderSettings st = test::direct_light_settings(true);
   std::vector<double> out;
   scene::LoadedScene scene = scene::load_scene({"far.rad"});
   render::Renderer renderer(scene, st, device::default_context());

@@ -33,13 +33,7 @@ std::string num(double x) {
 class StabilityExtremeSources : public test::SceneDir {
 protected:
   static render::RenderSettings direct(bool sensors) {
-    render::RenderSettings st;
-    st.ab = 0;
-    st.dj = 0;
-    st.ds = 0;
-    st.dt = 0;
-    st.irradiance_I = sensors;
-    return st;
+    return test::direct_light_settings(sensors);
   }
   std::vector<render::PrimaryResult> render(const std::string& text,
                                             const std::vector<render::PrimaryRay>& rays,

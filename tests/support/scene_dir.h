@@ -15,6 +15,17 @@
 
 namespace radcl::test {
 
+// Deterministic direct light only (-ab 0 -dj 0 -ds 0 -dt 0), with -I meters if `meters`.
+inline render::RenderSettings direct_light_settings(bool meters) {
+  render::RenderSettings st;
+  st.ab = 0;
+  st.dj = 0;
+  st.ds = 0;
+  st.dt = 0;
+  st.irradiance_I = meters;
+  return st;
+}
+
 class SceneDir : public ::testing::Test {
 protected:
   std::filesystem::path dir;
