@@ -73,6 +73,10 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
 /* Lineage bit: a reflection about a normal tilted by a texture (glass, dielectric): rtrace's
  * mirrored length (-o l, L) stops at the surface, as Radiance's rmt there. */
 #define RC_RAY_TILTED 128u
+/* A hemisphere sample of a record being made: its lineage counts as a primary's (the MIRRORED
+ * and THROUGH bits of its children), so that its length is Radiance's raydistance(), the
+ * effective length through glass or along a mirror. Not inherited. */
+#define RC_RAY_ROOT 256u
 
 /* rc_ray.org.w / rc_shadow.org.w of a ray whose origin was moved off the surface it leaves
  * (rc_leave): traced with no minimum distance, so that nothing near the point is skipped. */

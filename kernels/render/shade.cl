@@ -239,13 +239,13 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
 #endif
     r.cell = 0;
     r.depth = depth;
-    r.flags = kind | rc_crtype(parent->flags);
-    if (kind == RC_RAY_REFLECTED && (parent->flags & RC_RAY_KIND_MASK) == RC_RAY_PRIMARY)
-      r.flags |= RC_RAY_MIRRORED;
-    /* Only an unbroken chain of transmissions from the primary keeps the "through" bit. */
+    r.flags = (kind | rc_crtype(parent->flags)) & ~RC_RAY_ROOT;
     uint pk = parent->flags & RC_RAY_KIND_MASK;
+    int root = pk == RC_RAY_PRIMARY || (parent->flags & RC_RAY_ROOT) != 0u;
+    if (kind == RC_RAY_REFLECTED && root) r.flags |= RC_RAY_MIRRORED;
+    /* Only an unbroken chain of transmissions from the primary keeps the "through" bit. */
     if (kind == RC_RAY_TRANSMITTED &&
-        (pk == RC_RAY_PRIMARY || (pk == RC_RAY_TRANSMITTED && (parent->flags & RC_RAY_THROUGH))))
+        (root || (pk == RC_RAY_TRANSMITTED && (parent->flags & RC_RAY_THROUGH))))
       r.flags |= RC_RAY_THROUGH;
     else
       r.flags &= ~RC_RAY_THROUGH;

@@ -411,7 +411,7 @@ struct Renderer::Impl {
       if (n2 <= 49) continue;
       bool ok = true;
       for (std::size_t k = 0; k < n2 && ok; ++k)
-        ok = res[h.first + k].hit ? res[h.first + k].t > 1e-6 : true;
+        ok = sample_length(res[h.first + k]) > 1e-6;
       int cnt = static_cast<int>(settings.as * h.pos.w + 0.5);
       if (!ok || cnt <= 8) continue;
       std::vector<double> b(n2), e(n2, 0.0);
@@ -484,8 +484,19 @@ struct Renderer::Impl {
       const int c = ++count[division[x]];
       for (int k = 0; k < 3; ++k)
         r.value[k] += (more[x].value[k] - r.value[k]) / c;
-      if (more[x].hit) nearest[division[x]] = std::min(nearest[division[x]], more[x].t);
+      nearest[division[x]] = std::min(nearest[division[x]], sample_length(more[x]));
     }
+  }
+
+  // A hemisphere sample's length as Radiance's raydistance(): through glass and other clear
+  // transmission the effective length goes on to what lies beyond (the sky seen through a
+  // window is far, not at the pane), along the mirror reflection where that carries more than
+  // half the value; 1e10 where nothing was met.
+  static double sample_length(const PrimaryResult& r) {
+    if (!r.hit) return 1e10;
+    auto bright = [](const Vec3d& c) { return 0.2651 * c[0] + 0.6701 * c[1] + 0.0648 * c[2]; };
+    const double beyond = bright(r.mirrored) > 0.5 * bright(r.value) ? r.mirror_t : r.through_t;
+    return std::min(1e10, r.t + std::max(beyond, 0.0));
   }
 
   void sample_hemispheres(const std::vector<const rc_ray*>& chosen) {
@@ -532,7 +543,8 @@ struct Renderer::Impl {
           rays.push_back({o, unit(dir), 0, next_sample_id++});
           RayStart s;
           s.flags =
-              RC_RAY_AMBIENT | (m->flags & ~(RC_RAY_KIND_MASK | RC_RAY_MIRRORED | RC_RAY_THROUGH));
+              RC_RAY_AMBIENT | RC_RAY_ROOT |
+              (m->flags & ~(RC_RAY_KIND_MASK | RC_RAY_MIRRORED | RC_RAY_THROUGH | RC_RAY_TILTED));
           s.depth = m->depth + 1;
           s.ambient_depth = m->ambient_depth + 1;
           s.weight = sw;
@@ -547,7 +559,7 @@ struct Renderer::Impl {
     --nesting;
     std::vector<double> nearest(res.size());
     for (std::size_t i = 0; i < res.size(); ++i)
-      nearest[i] = res[i].hit ? res[i].t : 1e10;
+      nearest[i] = sample_length(res[i]);
     supersample_hemispheres(hemis, rays, start, res, nearest);
     // The strata as the record kernel reads them: value over ns^2, reciprocal distance (0:
     // nothing hit, < 0: a failed sample) and the point met, clamped as Radiance clamps it.
@@ -557,7 +569,7 @@ struct Renderer::Impl {
       for (std::uint32_t k = 0; k < h.ns * h.ns; ++k) {
         const std::size_t i = h.first + k;
         const PrimaryResult& r = res[i];
-        const double t = r.hit ? r.t : 1e10, near = nearest[i];
+        const double t = sample_length(r), near = nearest[i];
         const double c = 1.0 / (static_cast<double>(h.ns) * h.ns);
         samples[i].val = f4(r.value[0] * c, r.value[1] * c, r.value[2] * c,
                             near <= 1e-6  ? -1.0
@@ -691,6 +703,7 @@ struct Renderer::Impl {
   std::unordered_map<std::uint32_t, std::uint32_t> id_slot;
   std::vector<Vec3d>* mirrored = nullptr; // the batch's mirrored sums, per primary
   std::span<PrimaryResult> results;       // the batch's results
+  std::vector<std::uint32_t> root_depth;  // reflection depth of the batch's first rays
   std::size_t slot(std::uint32_t primary) const {
     return id_slot.empty() ? primary - batch_first : id_slot.at(primary);
   }
@@ -715,6 +728,7 @@ struct Renderer::Impl {
     std::vector<Vec3d> mirror_sums(prim.size(), Vec3d{0, 0, 0});
     mirrored = &mirror_sums;
     results = res;
+    root_depth.assign(prim.size(), 0);
     if (tree) tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
     for (std::size_t i = 0; i < prim.size(); ++i) {
       Vec3d d = unit(prim[i].dir);
@@ -738,6 +752,7 @@ struct Renderer::Impl {
         r.dist0 = st.dist0;
         r.org.w = RC_TMIN_OFF; // its origin is already beside the surface
       }
+      root_depth[i] = r.depth;
     }
     if (settings.irradiance_I && nesting == 0) {
       // The measurement point is a diffuse meter facing the given direction (1e-4 along it,
@@ -1181,7 +1196,8 @@ struct Renderer::Impl {
     };
     for (std::size_t i = 0; i < n; ++i)
       if ((queue[i].flags & RC_RAY_MIRRORED) &&
-          (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED && queue[i].depth == 1) {
+          (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED &&
+        queue[i].depth == root_depth[slot(queue[i].primary)] + 1) {
         PrimaryResult& pr = results[slot(queue[i].primary)];
         pr.mirror_t = (queue[i].flags & RC_RAY_TILTED) ? 0.0
                       : gh[i]                          ? dist(gh[i]->point, pr.point)
