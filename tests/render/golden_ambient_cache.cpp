@@ -146,10 +146,49 @@ TEST(GoldenAmbientCache, OfficeClearDefaultFromScratch) {
   fs::remove(amb);
 }
 
-// Issue 7's accuracy bound: against office_clear_high, radcl's mean and worst sensor errors at
-// most 1.5 times those of Radiance's default run. Known gap, kept disabled (bound unchanged):
-// the mean now passes (2.0-2.1% against 2.2%), the worst sensor does not reliably (7.0-8.1%
-// against 7.6%; docs/ambient.md).
+// Issue 7's accuracy bound, radcl's mean and worst sensor errors at most 1.5 times those of
+// Radiance's own default run, against the converged answer at the run's own -ab 5: the mean of
+// 30 independent -aa 0 runs of Radiance (results/*_mc5.txt, 0.1-0.4% standard error; radcl's
+// own -aa 0 agrees with it within that). The _high runs are not that answer: they are cache
+// runs themselves and 3.4-3.8% above it on the offices (at their own -ab 8 still +0.5-0.9%;
+// docs/bench/ambient.md), so they measure a run's bounce count and Radiance's cache bias as
+// much as its error. radcl's errors against them are recorded, not bounded.
+struct AccuracyCase {
+  const char *octree, *grid, *name;
+};
+void PrintTo(const AccuracyCase& c, std::ostream* os) { *os << c.name; }
+class DefaultAccuracy : public ::testing::TestWithParam<AccuracyCase> {};
+
+TEST_P(DefaultAccuracy, WithinRadiancesErrorsOfTheConvergedAnswer) {
+  const AccuracyCase& c = GetParam();
+  auto ours = rtrace_sensors("-u- -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3", c.octree,
+                             c.grid);
+  auto result = [&](const std::string& kind) {
+    return radcl::test::read_rgb(
+        radcl::test::data("results/" + std::string(c.name) + "_" + kind + ".txt"));
+  };
+  auto exact = result("mc5"), radiance = result("default"), high = result("high");
+  ASSERT_FALSE(exact.empty());
+  Errors e = errors(ours, exact), r = errors(radiance, exact), h = errors(ours, high);
+  EXPECT_LE(e.mean, 1.5 * r.mean) << "radcl " << e.mean << ", Radiance " << r.mean;
+  EXPECT_LE(e.worst, 1.5 * r.worst) << "radcl " << e.worst << ", Radiance " << r.worst;
+  RecordProperty("mean", std::to_string(e.mean));
+  RecordProperty("worst", std::to_string(e.worst));
+  RecordProperty("mean_vs_high", std::to_string(h.mean));
+  RecordProperty("worst_vs_high", std::to_string(h.worst));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    GoldenAmbientCache, DefaultAccuracy,
+    ::testing::Values(AccuracyCase{"office_clear.oct", "office_grid.pts", "office_clear"},
+                      AccuracyCase{"office_overcast.oct", "office_grid.pts", "office_overcast"},
+                      AccuracyCase{"luminaires.oct", "luminaires_grid.pts", "luminaires"}),
+    [](const ::testing::TestParamInfo<AccuracyCase>& i) { return std::string(i.param.name); });
+
+// The same run against office_clear_high, the bound as the issue states it: the mean misses it
+// (2.45% against 1.5 x 1.48%; the worst sensor passes, 5.0% against 7.6%) because the _high run
+// has three more bounces, which Radiance's default run, unlike radcl's, makes up for with its
+// cache's upward bias (+1.9% against the converged -ab 5 answer, radcl's +0.9%; see above).
 TEST(GoldenAmbientCache, DISABLED_OfficeClearDefaultAccuracy) {
   auto ours = rtrace_sensors("-u- -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3",
                              "office_clear.oct", "office_grid.pts");
