@@ -6,6 +6,11 @@
 # office_view at 256^2 and 1024^2 with Radiance's options; lookup throughput: office_view at
 # 512^2 reading a read-only copy of office_clear_high.amb (about 98,000 records).
 #
+# Errors are against the converged answer at the runs' own -ab (Radiance's -aa 0 mean of 30
+# runs, tests/data/results/*_mc5.txt) and, for radcl, against the _high runs as well. With
+# RADIANCE_BIN set to a directory holding Radiance's rtrace and rpict, Radiance runs here too,
+# in the same go, and its times and errors come from that run.
+#
 # usage: tests/bench/ambient_cache.sh [build-dir] [threads]   (rpict uses every core)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -13,6 +18,7 @@ build=$(cd "${1:-$root/build}" && pwd)
 threads=${2:-2}
 scenes=$root/tests/data/scenes
 ref=${RADCL_REFERENCE:-$root/../shared/reference}/results
+data=$root/tests/data/results # the converged answers (tests/data/README.md)
 times=$ref/radiance_times.tsv
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -34,21 +40,32 @@ run() { # output-file args... ; prints seconds
 # Warm the program cache so compile time is not measured.
 ( cd "$scenes" && head -n 2 sphere_wall.pts | "$build/bin/rtrace" -h -I -ab 1 -aa 0.1 sphere.oct > /dev/null )
 
-printf '%-22s %9s %11s %8s   %-16s %s\n' case radcl_s radiance_s speedup "radcl err" "Radiance err (vs _high)"
+printf '%-24s %8s %10s %7s   %-15s %-15s %s\n' case radcl_s radiance_s speedup \
+  "radcl err" "Radiance err" "(vs converged -ab 5; radcl vs _high)"
 for name in office_clear_default office_overcast_default luminaires_default; do
   case $name in
-  office_clear_default) oct=office_clear.oct pts=office_grid.pts high=office_clear_high ;;
-  office_overcast_default) oct=office_overcast.oct pts=office_grid.pts high=office_overcast_high ;;
-  luminaires_default) oct=luminaires.oct pts=luminaires_grid.pts high=luminaires_high ;;
+  office_clear_default) oct=office_clear.oct pts=office_grid.pts base=office_clear ;;
+  office_overcast_default) oct=office_overcast.oct pts=office_grid.pts base=office_overcast ;;
+  luminaires_default) oct=luminaires.oct pts=luminaires_grid.pts base=luminaires ;;
   esac
+  opts="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3"
   # One sensor first, so the scene's program is compiled (and cached) before the timed run.
   run "$work/warm.txt" -ab 5 -ad 64 -as 0 -ar 256 -aa 0.15 -lw 1e-3 "$oct" < <(head -n 1 "$scenes/$pts") >/dev/null
-  secs=$(run "$work/$name.txt" -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 "$oct" < "$scenes/$pts")
-  rt=$(ref_time "$name")
-  e=$(errs "$work/$name.txt" "$ref/$high.txt")
-  er=$(errs "$ref/$name.txt" "$ref/$high.txt")
-  printf '%-22s %9s %11s %7.1fx   %-16s %s\n' "$name" "$secs" "$rt" \
-    "$(awk -v a="$rt" -v b="$secs" 'BEGIN { print a / b }')" "$e" "$er"
+  secs=$(run "$work/$name.txt" $opts "$oct" < "$scenes/$pts")
+  # Radiance on this machine when RADIANCE_BIN names its binaries (its errors from that run),
+  # else its stored time and result.
+  rt=$(ref_time "$name") rres=$ref/$name.txt where=stored
+  if [ -n "${RADIANCE_BIN:-}" ]; then
+    rt=$( (cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/rtrace" -h -I $opts "$oct" \
+      < "$scenes/$pts" > "$work/r_$name.txt") 2>&1 | tail -n 1)
+    rres=$work/r_$name.txt where=here
+  fi
+  exact=$data/${base}_mc5.txt
+  e=$(errs "$work/$name.txt" "$exact")
+  er=$(errs "$rres" "$exact")
+  eh=$(errs "$work/$name.txt" "$ref/${base}_high.txt")
+  printf '%-24s %8s %10s %6.2fx   %-15s %-15s %s\n' "$name" "$secs" "$rt ($where)" \
+    "$(awk -v a="$rt" -v b="$secs" 'BEGIN { print a / b }')" "$e" "$er" "$eh"
 done
 
 echo
@@ -57,10 +74,17 @@ printf '%-6s %9s %11s %10s %10s %10s\n' "-ab" radcl_s radiance_s radcl radiance 
 for ab in 1 2 4 8; do
   secs=$(run "$work/s$ab.txt" -ab "$ab" -ad 1024 -as 256 -aa 0.1 -ar 64 -lw 1e-5 sphere.oct \
     < "$scenes/sphere_wall.pts")
+  rres=$ref/sphere_ab$ab.txt rt=$(ref_time sphere_ab$ab)
+  if [ -n "${RADIANCE_BIN:-}" ]; then
+    rt=$( (cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/rtrace" -h -I -ab "$ab" -ad 1024 \
+      -as 256 -aa 0.1 -ar 64 -lw 1e-5 sphere.oct < sphere_wall.pts > "$work/rs$ab.txt") 2>&1 |
+      tail -n 1)
+    rres=$work/rs$ab.txt
+  fi
   m=$(awk '{ s += $1; n++ } END { printf "%.4f", s / n }' "$work/s$ab.txt")
-  r=$(awk '{ s += $1; n++ } END { printf "%.4f", s / n }' "$ref/sphere_ab$ab.txt")
+  r=$(awk '{ s += $1; n++ } END { printf "%.4f", s / n }' "$rres")
   x=$(awk -v ab="$ab" '$1 == ab { printf "%.4f", $2 }' "$ref/sphere_exact.txt")
-  printf '%-6s %9s %11s %10s %10s %10s\n' "$ab" "$secs" "$(ref_time sphere_ab$ab)" "$m" "$r" "$x"
+  printf '%-6s %9s %11s %10s %10s %10s\n' "$ab" "$secs" "$rt" "$m" "$r" "$x"
 done
 
 pict() { # resolution extra-args... ; prints seconds
@@ -78,6 +102,11 @@ for res in 256 1024; do
   secs=$(pict "$res")
   rt=n/a
   [ "$res" = 256 ] && rt=$(ref_time office_view)
+  if [ -n "${RADIANCE_BIN:-}" ]; then
+    rt=$( (cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/rpict" -vf office.vf -x "$res" \
+      -y "$res" -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128 office_clear.oct > /dev/null) 2>&1 |
+      tail -n 1)
+  fi
   printf '%-12s %9s %11s %12.0f\n' "${res}x$res" "$secs" "$rt" \
     "$(awk -v s="$secs" -v r="$res" 'BEGIN { print r * r / s }')"
 done
@@ -86,6 +115,12 @@ if [ -f "$ref/office_clear_high.amb" ]; then
   chmod 444 "$work/high.amb"
   nrec=$("$build/bin/radcl" ambient -d "$work/high.amb" | wc -l)
   secs=$(pict 512 -af "$work/high.amb")
+  if [ -n "${RADIANCE_BIN:-}" ]; then
+    rt=$( (cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/rpict" -vf office.vf -x 512 \
+      -y 512 -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128 -af "$work/high.amb" office_clear.oct \
+      > /dev/null) 2>&1 | tail -n 1)
+    echo "Radiance here, the same run: $rt s"
+  fi
   echo
   echo "lookups: office_view 512x512 reading office_clear_high.amb (~$nrec records, read-only)"
   printf '%9s s, %.0f pixels/s (every primary on a diffuse surface is one lookup; the seed\n' \
