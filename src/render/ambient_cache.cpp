@@ -194,6 +194,46 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
   return out;
 }
 
+AmbientCacheBuffers join_ambient_caches(const AmbientCacheBuffers& a, const AmbientCacheBuffers& b,
+                                        std::uint32_t b_offset) {
+  if (b.nodes.empty()) return a;
+  AmbientCacheBuffers out;
+  if (a.nodes.empty()) {
+    out = b;
+    for (std::uint32_t& s : out.source)
+      s += b_offset;
+    return out;
+  }
+  const auto na = static_cast<std::uint32_t>(a.nodes.size());
+  const auto ra = static_cast<std::uint32_t>(a.records.size());
+  out.nodes.reserve(1 + a.nodes.size() + b.nodes.size());
+  rc_amb_node root{};
+  const rc_amb_node &ta = a.nodes.front(), &tb = b.nodes.front();
+  root.lo =
+      f4(std::min(ta.lo.x, tb.lo.x), std::min(ta.lo.y, tb.lo.y), std::min(ta.lo.z, tb.lo.z), 0);
+  root.hi =
+      f4(std::max(ta.hi.x, tb.hi.x), std::max(ta.hi.y, tb.hi.y), std::max(ta.hi.z, tb.hi.z), 0);
+  root.skip = static_cast<std::uint32_t>(1 + a.nodes.size() + b.nodes.size());
+  out.nodes.push_back(root);
+  for (rc_amb_node n : a.nodes) {
+    n.skip += 1;
+    out.nodes.push_back(n);
+  }
+  for (rc_amb_node n : b.nodes) {
+    n.skip += 1 + na;
+    if (n.count) n.first += ra;
+    out.nodes.push_back(n);
+  }
+  out.records = a.records;
+  out.records.insert(out.records.end(), b.records.begin(), b.records.end());
+  out.corral = a.corral;
+  out.corral.insert(out.corral.end(), b.corral.begin(), b.corral.end());
+  out.source = a.source;
+  for (std::uint32_t s : b.source)
+    out.source.push_back(s + b_offset);
+  return out;
+}
+
 std::array<double, 3> averaged_ambient_value(const std::array<double, 3>& av, int aw,
                                              std::span<const ambient::AmbientRecord> records) {
   auto bright = [](double r, double g, double b) {

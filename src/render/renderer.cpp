@@ -150,6 +150,11 @@ struct Renderer::Impl {
         materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
         patterns(upload(c, cs.patterns)), centre(geom.centre()) {
     amb_blocked = device::Buffer(c, 16);
+    {
+      const auto b = geom.bounds();
+      const double size = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2]});
+      if (std::isfinite(size) && size > 0) meter_off = std::min(1e-4, 1e-6 * size);
+    }
     if (st.ambient_list != RenderSettings::AmbientList::None) {
       mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
                         st.ambient_names);
@@ -206,8 +211,9 @@ struct Renderer::Impl {
     float weight = 1;
     float dist0 = 0; // the ray tree's length before it: the record's point is its parent's hit
   };
-  rc_params base{};   // the uploaded parameters, amb.w aside
-  double ray_eps = 0; // the least distance rays leave surfaces by (spec.z)
+  rc_params base{};        // the uploaded parameters, amb.w aside
+  double ray_eps = 0;      // the least distance rays leave surfaces by (spec.z)
+  double meter_off = 1e-4; // Renderer::meter_offset
   // How far off a surface a ray leaving point p (re-centred) starts, as the kernels' rc_leave:
   // never less than p's float coordinates resolve.
   double leave_dist(double x, double y, double z) const {
@@ -236,29 +242,54 @@ struct Renderer::Impl {
   std::vector<std::uint32_t> leak_lists{0};
   std::size_t leak_uploaded = 0;
 
+  // The lookup tree (and the leak test's tree of marked records) as a large tree over the
+  // records up to base_n joined to a small one over those added since: the large one is rebuilt
+  // only when the newer records reach half its size (at least 2,048), so adding records to a
+  // big loaded cache costs what the new ones cost.
+  AmbientCacheBuffers cache_base, marked_base;
+  std::size_t base_n = 0;
+  std::vector<std::uint32_t> marked_base_src; // cache_local index of each marked_base input
+
   void upload_cache() {
-    cache = AmbientCacheBuffers{};
-    if (uses_cache(settings)) cache = build_ambient_cache(cache_local, {0, 0, 0}, settings.aa);
-    // RADCL_LEAK_TEST=0 leaves the leak test out (to measure what it costs and changes).
-    const char* lt = std::getenv("RADCL_LEAK_TEST");
-    marked = AmbientCacheBuffers{};
-    leak_tester = LeakTester();
-    if (!(lt && std::string(lt) == "0") && !cache.records.empty()) {
-      // The marked records, built into a tree of their own, named by their index in `cache`.
-      std::vector<std::uint32_t> leaf_of(cache_local.size(), 0), subset;
+    const char* lt = std::getenv("RADCL_LEAK_TEST"); // "0": no leak test (to measure it)
+    const bool leak_test = !(lt && std::string(lt) == "0");
+    const std::size_t n = uses_cache(settings) ? cache_local.size() : 0;
+    auto marked_of = [&](std::size_t from, std::size_t to, std::vector<std::uint32_t>& src) {
       std::vector<ambient::AmbientRecord> recs;
-      for (std::size_t k = 0; k < cache.source.size(); ++k)
-        leaf_of[cache.source[k]] = static_cast<std::uint32_t>(k);
-      for (std::size_t i = 0; i < cache_local.size(); ++i)
+      src.clear();
+      for (std::size_t i = from; i < to; ++i)
         if (cache_local[i].corral) {
-          subset.push_back(static_cast<std::uint32_t>(i));
+          src.push_back(static_cast<std::uint32_t>(i));
           recs.push_back(cache_local[i]);
         }
-      if (!recs.empty()) {
-        marked = build_ambient_cache(recs, {0, 0, 0}, settings.aa);
+      return leak_test ? build_ambient_cache(recs, {0, 0, 0}, settings.aa) : AmbientCacheBuffers{};
+    };
+    if (n < base_n || n - base_n > std::max<std::size_t>(2048, base_n / 2)) {
+      base_n = n;
+      cache_base = build_ambient_cache(std::span(cache_local).first(n), {0, 0, 0}, settings.aa);
+      marked_base = marked_of(0, n, marked_base_src);
+    }
+    const std::span<const ambient::AmbientRecord> newer =
+        std::span(cache_local).subspan(base_n, n - base_n);
+    cache = join_ambient_caches(cache_base, build_ambient_cache(newer, {0, 0, 0}, settings.aa),
+                                static_cast<std::uint32_t>(base_n));
+    marked = AmbientCacheBuffers{};
+    leak_tester = LeakTester();
+    if (leak_test && !cache.records.empty()) {
+      // The marked records' tree, its leaves named by their index in `cache`.
+      std::vector<std::uint32_t> newer_src;
+      AmbientCacheBuffers mn = marked_of(base_n, n, newer_src);
+      std::vector<std::uint32_t> src = marked_base_src; // marked input index -> cache_local
+      src.insert(src.end(), newer_src.begin(), newer_src.end());
+      marked =
+          join_ambient_caches(marked_base, mn, static_cast<std::uint32_t>(marked_base_src.size()));
+      if (!marked.records.empty()) {
+        std::vector<std::uint32_t> leaf_of(cache_local.size(), 0);
+        for (std::size_t k = 0; k < cache.source.size(); ++k)
+          leaf_of[cache.source[k]] = static_cast<std::uint32_t>(k);
         std::vector<std::uint32_t> to_full(marked.source.size());
         for (std::size_t j = 0; j < to_full.size(); ++j)
-          to_full[j] = leaf_of[subset[marked.source[j]]];
+          to_full[j] = leaf_of[src[marked.source[j]]];
         leak_tester =
             LeakTester(&marked, static_cast<float>(settings.aa),
                        static_cast<float>(settings.ambient_min_radius), std::move(to_full));
@@ -756,12 +787,13 @@ struct Renderer::Impl {
     }
     if (settings.irradiance_I && nesting == 0) {
       // The measurement point is a diffuse meter facing the given direction (1e-4 along it,
-      // where Radiance's reversed primary ray meets it).
+      // where Radiance's reversed primary ray meets it; less in a small scene: meter_offset).
       hits.resize(prim.size());
       for (std::size_t i = 0; i < prim.size(); ++i) {
         Vec3d d = unit(prim[i].dir);
-        Vec3d p = {prim[i].org[0] + 1e-4 * d[0], prim[i].org[1] + 1e-4 * d[1],
-                   prim[i].org[2] + 1e-4 * d[2]};
+        const double off = meter_off;
+        Vec3d p = {prim[i].org[0] + off * d[0], prim[i].org[1] + off * d[1],
+                   prim[i].org[2] + off * d[2]};
         rc_hit& h = hits[i];
         h = rc_hit{};
         h.pos = f4(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2], 1e-5);
@@ -1197,7 +1229,7 @@ struct Renderer::Impl {
     for (std::size_t i = 0; i < n; ++i)
       if ((queue[i].flags & RC_RAY_MIRRORED) &&
           (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED &&
-        queue[i].depth == root_depth[slot(queue[i].primary)] + 1) {
+          queue[i].depth == root_depth[slot(queue[i].primary)] + 1) {
         PrimaryResult& pr = results[slot(queue[i].primary)];
         pr.mirror_t = (queue[i].flags & RC_RAY_TILTED) ? 0.0
                       : gh[i]                          ? dist(gh[i]->point, pr.point)
@@ -1338,6 +1370,9 @@ const RenderStats& Renderer::stats() const {
 }
 const geometry::SceneGeometry& Renderer::geometry() const {
   return impl_->geom;
+}
+double Renderer::meter_offset() const {
+  return impl_->meter_off;
 }
 
 } // namespace radcl::render

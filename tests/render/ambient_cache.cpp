@@ -42,6 +42,45 @@ std::vector<ambient::AmbientRecord> random_records(int n, unsigned seed) {
   return out;
 }
 
+// Walks the tree: every node's subtree is [i + 1, skip) and its boxes hold its records' regions.
+// Returns the number of leaves.
+std::size_t check_tree(const render::AmbientCacheBuffers& b, double aa) {
+  std::vector<std::size_t> stack;
+  std::size_t leaves = 0;
+  for (std::size_t i = 0; i < b.nodes.size(); ++i) {
+    const rc_amb_node& nd = b.nodes[i];
+    EXPECT_GT(nd.skip, i);
+    EXPECT_LE(nd.skip, b.nodes.size());
+    while (!stack.empty() && b.nodes[stack.back()].skip <= i)
+      stack.pop_back();
+    if (nd.count) {
+      ++leaves;
+      EXPECT_EQ(nd.skip, i + 1);
+      for (std::uint32_t k = nd.first; k < nd.first + nd.count; ++k) {
+        const rc_amb_record& r = b.records[k];
+        const float p[3] = {r.pos.x, r.pos.y, r.pos.z}, n[3] = {r.nrm.x, r.nrm.y, r.nrm.z};
+        std::vector<std::size_t> up = stack;
+        up.push_back(i);
+        for (std::size_t a : up) {
+          const rc_amb_node& box = b.nodes[a];
+          const float lo[3] = {box.lo.x, box.lo.y, box.lo.z},
+                      hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+          for (int c = 0; c < 3; ++c) {
+            // The disc of radius aa * rad[1] and the slab of aa * rad[0] along the normal.
+            const float e =
+                0.999f * float(aa) *
+                (r.udir.w * std::sqrt(std::max(0.0f, 1 - n[c] * n[c])) + r.nrm.w * std::fabs(n[c]));
+            EXPECT_LE(lo[c], p[c] - e);
+            EXPECT_GE(hi[c], p[c] + e);
+          }
+        }
+      }
+    }
+    stack.push_back(i);
+  }
+  return leaves;
+}
+
 } // namespace
 
 TEST(AmbientCacheBvh, EveryRecordOnceInsideItsAncestors) {
@@ -55,40 +94,7 @@ TEST(AmbientCacheBvh, EveryRecordOnceInsideItsAncestors) {
     for (const rc_amb_record& r : b.records)
       seen.insert(int(r.val.x));
     EXPECT_EQ(seen.size(), recs.size());
-    // Walk the tree: a node's subtree is [i + 1, skip); its boxes hold its records' regions.
-    std::vector<std::size_t> stack;
-    std::size_t leaves = 0;
-    for (std::size_t i = 0; i < b.nodes.size(); ++i) {
-      const rc_amb_node& nd = b.nodes[i];
-      ASSERT_GT(nd.skip, i);
-      ASSERT_LE(nd.skip, b.nodes.size());
-      while (!stack.empty() && b.nodes[stack.back()].skip <= i)
-        stack.pop_back();
-      if (nd.count) {
-        ++leaves;
-        EXPECT_EQ(nd.skip, i + 1);
-        for (std::uint32_t k = nd.first; k < nd.first + nd.count; ++k) {
-          const rc_amb_record& r = b.records[k];
-          const float p[3] = {r.pos.x, r.pos.y, r.pos.z}, n[3] = {r.nrm.x, r.nrm.y, r.nrm.z};
-          std::vector<std::size_t> up = stack;
-          up.push_back(i);
-          for (std::size_t a : up) {
-            const rc_amb_node& box = b.nodes[a];
-            const float lo[3] = {box.lo.x, box.lo.y, box.lo.z},
-                        hi[3] = {box.hi.x, box.hi.y, box.hi.z};
-            for (int c = 0; c < 3; ++c) {
-              // The disc of radius aa * rad[1] and the slab of aa * rad[0] along the normal.
-              const float e = 0.999f * float(aa) *
-                              (r.udir.w * std::sqrt(std::max(0.0f, 1 - n[c] * n[c])) +
-                               r.nrm.w * std::fabs(n[c]));
-              EXPECT_LE(lo[c], p[c] - e);
-              EXPECT_GE(hi[c], p[c] + e);
-            }
-          }
-        }
-      }
-      stack.push_back(i);
-    }
+    const std::size_t leaves = check_tree(b, aa);
     EXPECT_GE(leaves, (recs.size() + 7) / 8);
     // Positions are re-centred.
     bool found = false;
@@ -143,4 +149,31 @@ TEST(AmbientValueWeight, AveragesInTheLogDomain) {
   EXPECT_EQ(v[1], 3);
   v = render::averaged_ambient_value({2, 3, 4}, 5, {});
   EXPECT_EQ(v[2], 4);
+}
+
+// A tree over the newest records joined to the one over the rest: one tree whose walk holds
+// every record once, inside its ancestors' boxes, in the order a's records then b's, with b's
+// source indices raised past a's input.
+TEST(AmbientCacheBvh, JoinedTreesHoldBothRecordSets) {
+  const double aa = 0.15;
+  for (auto [na, nb] : {std::pair{0, 5}, {5, 0}, {1, 1}, {300, 7}, {2000, 600}}) {
+    auto all = random_records(na + nb, 99u + na);
+    std::span<const ambient::AmbientRecord> sa(all.data(), na), sb(all.data() + na, nb);
+    render::AmbientCacheBuffers a = render::build_ambient_cache(sa, {0, 0, 0}, aa);
+    render::AmbientCacheBuffers b = render::build_ambient_cache(sb, {0, 0, 0}, aa);
+    render::AmbientCacheBuffers j =
+        render::join_ambient_caches(a, b, static_cast<std::uint32_t>(na));
+    ASSERT_EQ(j.records.size(), all.size());
+    ASSERT_EQ(j.source.size(), all.size());
+    ASSERT_EQ(j.corral.size(), all.size());
+    if (!all.empty()) check_tree(j, aa);
+    std::set<std::uint32_t> seen;
+    for (std::size_t k = 0; k < j.records.size(); ++k) {
+      // val.x names the record: its source index must point back at it.
+      EXPECT_EQ(int(j.records[k].val.x), int(all[j.source[k]].val[0]));
+      EXPECT_EQ(k < a.records.size(), j.source[k] < std::uint32_t(na));
+      seen.insert(j.source[k]);
+    }
+    EXPECT_EQ(seen.size(), all.size());
+  }
 }

@@ -156,13 +156,15 @@ TEST(GoldenAmbientCache, OfficeClearDefaultFromScratch) {
 struct AccuracyCase {
   const char *octree, *grid, *name;
 };
-void PrintTo(const AccuracyCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const AccuracyCase& c, std::ostream* os) {
+  *os << c.name;
+}
 class DefaultAccuracy : public ::testing::TestWithParam<AccuracyCase> {};
 
 TEST_P(DefaultAccuracy, WithinRadiancesErrorsOfTheConvergedAnswer) {
   const AccuracyCase& c = GetParam();
-  auto ours = rtrace_sensors("-u- -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3", c.octree,
-                             c.grid);
+  auto ours =
+      rtrace_sensors("-u- -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3", c.octree, c.grid);
   auto result = [&](const std::string& kind) {
     return radcl::test::read_rgb(
         radcl::test::data("results/" + std::string(c.name) + "_" + kind + ".txt"));

@@ -25,6 +25,13 @@ struct AmbientCacheBuffers {
 AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> records,
                                         const std::array<double, 3>& centre, double aa);
 
+// One tree over `a`'s and `b`'s records: a root over both, then `a`'s nodes, then `b`'s (leaf
+// order: a's records, then b's; b's `source` indices are raised by `b_offset`, the count of
+// records a was built from). The cache grows by a small tree over its newest records joined to
+// the large one over the rest, so a record added to 100,000 does not rebuild them all.
+AmbientCacheBuffers join_ambient_caches(const AmbientCacheBuffers& a, const AmbientCacheBuffers& b,
+                                        std::uint32_t b_offset);
+
 // Radiance's setambres(): the smallest record radius, the octree cube's size over -ar (1e-5
 // when -ar is 0), and the largest, 64 times that but at most a fifth of the cube.
 double ambient_min_radius(double cube_size, int ar);
