@@ -216,11 +216,9 @@ private:
     o.origin = p.org;
     o.direction = p.dir;
     if (opt_.immediate_irradiance) {
-      // What Radiance traces for -I: from just in front of the point (1.1e-4 where the meter
-      // is 1e-4 in front), back at it.
-      const double off = renderer_ ? 1.1 * renderer_->meter_offset() : 1.1e-4;
+      // What Radiance traces for -I: from just in front of the point, back at it.
       for (int i = 0; i < 3; ++i) {
-        o.origin[i] = p.org[i] + off * p.dir[i];
+        o.origin[i] = p.org[i] + 1.1e-4 * p.dir[i];
         o.direction[i] = -p.dir[i];
       }
     }

@@ -150,11 +150,6 @@ struct Renderer::Impl {
         materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
         patterns(upload(c, cs.patterns)), centre(geom.centre()) {
     amb_blocked = device::Buffer(c, 16);
-    {
-      const auto b = geom.bounds();
-      const double size = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2]});
-      if (std::isfinite(size) && size > 0) meter_off = std::min(1e-4, 1e-6 * size);
-    }
     if (st.ambient_list != RenderSettings::AmbientList::None) {
       mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
                         st.ambient_names);
@@ -211,9 +206,8 @@ struct Renderer::Impl {
     float weight = 1;
     float dist0 = 0; // the ray tree's length before it: the record's point is its parent's hit
   };
-  rc_params base{};        // the uploaded parameters, amb.w aside
-  double ray_eps = 0;      // the least distance rays leave surfaces by (spec.z)
-  double meter_off = 1e-4; // Renderer::meter_offset
+  rc_params base{};   // the uploaded parameters, amb.w aside
+  double ray_eps = 0; // the least distance rays leave surfaces by (spec.z)
   // How far off a surface a ray leaving point p (re-centred) starts, as the kernels' rc_leave:
   // never less than p's float coordinates resolve.
   double leave_dist(double x, double y, double z) const {
@@ -787,13 +781,12 @@ struct Renderer::Impl {
     }
     if (settings.irradiance_I && nesting == 0) {
       // The measurement point is a diffuse meter facing the given direction (1e-4 along it,
-      // where Radiance's reversed primary ray meets it; less in a small scene: meter_offset).
+      // where Radiance's reversed primary ray meets it).
       hits.resize(prim.size());
       for (std::size_t i = 0; i < prim.size(); ++i) {
         Vec3d d = unit(prim[i].dir);
-        const double off = meter_off;
-        Vec3d p = {prim[i].org[0] + off * d[0], prim[i].org[1] + off * d[1],
-                   prim[i].org[2] + off * d[2]};
+        Vec3d p = {prim[i].org[0] + 1e-4 * d[0], prim[i].org[1] + 1e-4 * d[1],
+                   prim[i].org[2] + 1e-4 * d[2]};
         rc_hit& h = hits[i];
         h = rc_hit{};
         h.pos = f4(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2], 1e-5);
@@ -1370,9 +1363,6 @@ const RenderStats& Renderer::stats() const {
 }
 const geometry::SceneGeometry& Renderer::geometry() const {
   return impl_->geom;
-}
-double Renderer::meter_offset() const {
-  return impl_->meter_off;
 }
 
 } // namespace radcl::render

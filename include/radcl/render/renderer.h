@@ -132,10 +132,6 @@ public:
   const CompiledScene& compiled() const;
   const RenderStats& stats() const;
   const geometry::SceneGeometry& geometry() const;
-  // How far in front of its point an -I meter sits: Radiance's fixed 1e-4, less in a scene
-  // under 100 units across (1e-6 of its size), so that a model in km meets its meters where
-  // the model in metres does (docs/stability.md, case 1).
-  double meter_offset() const;
 
   struct Impl;
 
