@@ -31,6 +31,11 @@ namespace radcl::render {
 
 namespace {
 
+// Radiance's bright() as the host's ambient code weighs samples.
+double bright(const Vec3d& c) {
+  return 0.2651 * c[0] + 0.6701 * c[1] + 0.0648 * c[2];
+}
+
 rc_float4 f4(double x, double y, double z, double w) {
   return rc_float4{static_cast<float>(x), static_cast<float>(y), static_cast<float>(z),
                    static_cast<float>(w)};
@@ -427,7 +432,6 @@ struct Renderer::Impl {
                                const std::vector<RayStart>& start, std::vector<PrimaryResult>& res,
                                std::vector<double>& nearest) {
     if (settings.as <= 0) return;
-    auto bright = [](const Vec3d& c) { return 0.2651 * c[0] + 0.6701 * c[1] + 0.0648 * c[2]; };
     std::vector<PrimaryRay> extra;
     std::vector<RayStart> extra_start;
     std::vector<std::size_t> division; // the sample slot each extra one refines
@@ -519,7 +523,6 @@ struct Renderer::Impl {
   // half the value; 1e10 where nothing was met.
   static double sample_length(const PrimaryResult& r) {
     if (!r.hit) return 1e10;
-    auto bright = [](const Vec3d& c) { return 0.2651 * c[0] + 0.6701 * c[1] + 0.0648 * c[2]; };
     const double beyond = bright(r.mirrored) > 0.5 * bright(r.value) ? r.mirror_t : r.through_t;
     return std::min(1e10, r.t + std::max(beyond, 0.0));
   }

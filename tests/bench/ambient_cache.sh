@@ -37,6 +37,13 @@ run() { # output-file args... ; prints seconds
   tail -n 1 "$work/err"
 }
 
+radiance() { # output program args... ; Radiance's program from RADIANCE_BIN; prints seconds
+  local out=$1 prog=$2; shift 2
+  ( cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/$prog" "$@" > "$out" 2> "$work/rerr" ) ||
+    { cat "$work/rerr"; exit 1; }
+  tail -n 1 "$work/rerr"
+}
+
 # Warm the program cache so compile time is not measured.
 ( cd "$scenes" && head -n 2 sphere_wall.pts | "$build/bin/rtrace" -h -I -ab 1 -aa 0.1 sphere.oct > /dev/null )
 
@@ -56,8 +63,7 @@ for name in office_clear_default office_overcast_default luminaires_default; do
   # else its stored time and result.
   rt=$(ref_time "$name") rres=$ref/$name.txt where=stored
   if [ -n "${RADIANCE_BIN:-}" ]; then
-    rt=$( (cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/rtrace" -h -I $opts "$oct" \
-      < "$scenes/$pts" > "$work/r_$name.txt") 2>&1 | tail -n 1)
+    rt=$(radiance "$work/r_$name.txt" rtrace -h -I $opts "$oct" < "$scenes/$pts")
     rres=$work/r_$name.txt where=here
   fi
   exact=$data/${base}_mc5.txt
@@ -76,9 +82,8 @@ for ab in 1 2 4 8; do
     < "$scenes/sphere_wall.pts")
   rres=$ref/sphere_ab$ab.txt rt=$(ref_time sphere_ab$ab)
   if [ -n "${RADIANCE_BIN:-}" ]; then
-    rt=$( (cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/rtrace" -h -I -ab "$ab" -ad 1024 \
-      -as 256 -aa 0.1 -ar 64 -lw 1e-5 sphere.oct < sphere_wall.pts > "$work/rs$ab.txt") 2>&1 |
-      tail -n 1)
+    rt=$(radiance "$work/rs$ab.txt" rtrace -h -I -ab "$ab" -ad 1024 -as 256 -aa 0.1 -ar 64 \
+      -lw 1e-5 sphere.oct < "$scenes/sphere_wall.pts")
     rres=$work/rs$ab.txt
   fi
   m=$(awk '{ s += $1; n++ } END { printf "%.4f", s / n }' "$work/s$ab.txt")
@@ -103,9 +108,8 @@ for res in 256 1024; do
   rt=n/a
   [ "$res" = 256 ] && rt=$(ref_time office_view)
   if [ -n "${RADIANCE_BIN:-}" ]; then
-    rt=$( (cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/rpict" -vf office.vf -x "$res" \
-      -y "$res" -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128 office_clear.oct > /dev/null) 2>&1 |
-      tail -n 1)
+    rt=$(radiance /dev/null rpict -vf office.vf -x "$res" -y "$res" -ab 2 -ad 1024 -as 256 \
+      -aa 0.15 -ar 128 office_clear.oct)
   fi
   printf '%-12s %9s %11s %12.0f\n' "${res}x$res" "$secs" "$rt" \
     "$(awk -v s="$secs" -v r="$res" 'BEGIN { print r * r / s }')"
@@ -118,9 +122,8 @@ if [ -f "$ref/office_clear_high.amb" ]; then
   if [ -n "${RADIANCE_BIN:-}" ]; then
     # A fresh copy: run as root, neither program is kept from appending by the mode bits.
     cp -f "$ref/office_clear_high.amb" "$work/high.amb"
-    rt=$( (cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/rpict" -vf office.vf -x 512 \
-      -y 512 -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128 -af "$work/high.amb" office_clear.oct \
-      > /dev/null) 2>&1 | tail -n 1)
+    rt=$(radiance /dev/null rpict -vf office.vf -x 512 -y 512 -ab 2 -ad 1024 -as 256 -aa 0.15 \
+      -ar 128 -af "$work/high.amb" office_clear.oct)
     echo "Radiance here, the same run: $rt s"
   fi
   echo
