@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Runs on the lent GPU machine, from the repository root, after scripts/device-bundle.sh made
+# .devlibs/bundle.tar.xz here: registers the NVIDIA OpenCL driver (the machine's ICD list lacks
+# it), then does what its arguments name, writing logs under $OUT:
+#   devices   radcl devices --check
+#   tests     the device-facing test executables on the GPU (stability suite first; TESTS
+#             names some instead, TEST_LIMIT is each one's time limit in seconds)
+#   bench     tests/bench/ambient_cache.sh on the GPU (Radiance alongside when it was bundled)
+#   bench-cpu the same on PoCL with every core
+# usage: scripts/device-run.sh devices tests bench ...
+set -uo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=${OUT:-/tmp/out}
+b=/tmp/radcl-bundle
+mkdir -p "$b" "$out" /tmp/vendors /tmp/pocl /tmp/radcl-cache
+tar -C "$b" -xJf "$root/.devlibs/bundle.tar.xz"
+echo /usr/local/nvidia/lib64/libnvidia-opencl.so.1 > /tmp/vendors/nvidia.icd
+for f in /etc/OpenCL/vendors/*.icd; do [ -e "$f" ] && cp "$f" /tmp/vendors/; done
+[ -x /usr/bin/time ] || cp "$b/bin/gnu-time" /usr/bin/time
+export OCL_ICD_VENDORS=/tmp/vendors LD_LIBRARY_PATH=$b/lib POCL_CACHE_DIR=/tmp/pocl \
+  RADCL_CACHE_DIR=/tmp/radcl-cache RADCL_TEST_DATA=$root/tests/data RADCL_BIN=$b/bin \
+  RADCL_SOURCE_DIR=$root RADCL_REFERENCE=$b/ref
+mkdir -p "$b/build" && ln -sfn "$b/bin" "$b/build/bin"
+[ -x "$b/radiance/rtrace" ] && export RADIANCE_BIN=$b/radiance RAYPATH=.:$b/radiance
+
+tests() { # the stability suite, then the rest, each executable under a time limit
+  local t s=0 f=0
+  local rc t0 list=${TESTS:-$(ls "$b"/bin/test_*stability* "$b"/bin/test_render_ambient_leaks
+    ls "$b"/bin/test_* | grep -v stability | grep -v ambient_leaks)}
+  for t in $list; do
+    t=$b/bin/$(basename "$t") t0=$(date +%s)
+    timeout "${TEST_LIMIT:-120}" "$t" --gtest_brief=1 > "$out/t.log" 2>&1
+    rc=$?
+    echo "$(basename "$t") rc=$rc $(($(date +%s) - t0)) s" >> "$out/times.txt"
+    if [ $rc = 0 ]; then s=$((s + 1))
+    else f=$((f + 1)); echo "== $(basename "$t") rc=$rc"; grep -E "FAILED|Failure|rror" "$out/t.log" | head -20; fi
+    grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/t.log" | sed "s|^|$(basename "$t"): |" >> "$out/tests.txt"
+  done
+  echo "test executables: $s passed, $f failed"
+}
+
+for what in "$@"; do
+  echo "=== $what $(date +%T)"
+  case $what in
+  devices) RADCL_DEVICE=nvidia "$b/bin/radcl" devices --check ;;
+  tests) RADCL_DEVICE=nvidia tests ;;
+  bench) RADCL_DEVICE=nvidia "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
+  bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;
+  esac
+done
