@@ -58,6 +58,10 @@ Buffer& Buffer::operator=(Buffer&& o) noexcept {
 }
 
 void* Buffer::map() {
+  if (host_ && ctx_->direct_host()) {
+    ctx_->sync();
+    return host_;
+  }
   void* p = nullptr;
   RADCL_CL_CREATE(p, clEnqueueMapBuffer(ctx_->queue(), mem_, CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0,
                                         bytes_, 0, nullptr, nullptr, &radcl_status_));
@@ -65,6 +69,7 @@ void* Buffer::map() {
 }
 
 void Buffer::unmap(void* ptr) {
+  if (host_ && ctx_->direct_host()) return;
   RADCL_CL(clEnqueueUnmapMemObject(ctx_->queue(), mem_, ptr, 0, nullptr, nullptr));
 }
 

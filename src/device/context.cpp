@@ -1,6 +1,8 @@
 #include "radcl/device/context.h"
 
+#include <cstdlib>
 #include <mutex>
+#include <string>
 
 #include "radcl/device/cl.h"
 #include "radcl/device/program.h"
@@ -8,6 +10,9 @@
 namespace radcl::device {
 
 Context::Context(const DeviceInfo& device) : info_(device) {
+  direct_host_ = device.host_unified_memory && device.kind == DeviceKind::CPU &&
+                 device.platform_name.find("Portable Computing Language") != std::string::npos &&
+                 !std::getenv("RADCL_MAP_BUFFERS"); // "1": map/unmap as on other devices
   cl_device_id id = static_cast<cl_device_id>(device.id);
   cl_context_properties props[] = {CL_CONTEXT_PLATFORM,
                                    reinterpret_cast<cl_context_properties>(device.platform), 0};
@@ -36,10 +41,16 @@ void Context::run(Kernel& kernel, std::size_t items, std::size_t group) {
   std::size_t global = (items + group - 1) / group * group;
   RADCL_CL(clEnqueueNDRangeKernel(queue_, kernel.handle(), 1, nullptr, &global, &group, 0, nullptr,
                                   nullptr));
+  pending_ = true;
 }
 
 void Context::finish() {
   RADCL_CL(clFinish(queue_));
+  pending_ = false;
+}
+
+void Context::sync() {
+  if (pending_) finish();
 }
 
 Context& default_context() {

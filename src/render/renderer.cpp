@@ -1,6 +1,7 @@
 #include "radcl/render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -351,7 +352,10 @@ struct Renderer::Impl {
       starts = sub_start;
       set_collect(!last);
       misses.clear();
+      const auto t0 = std::chrono::steady_clock::now();
       run(sub, res);
+      const double dt =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       set_collect(false);
       starts = saved_starts;
       tree = saved_tree;
@@ -367,8 +371,9 @@ struct Renderer::Impl {
         else
           results[todo[k]] = std::move(res[k]);
       if (std::getenv("RADCL_DEBUG_CACHE"))
-        std::fprintf(stderr, "cache: nesting %d round %d: %zu primaries, %zu missed, %zu misses\n",
-                     nesting, round, sub.size(), again.size(), miss.size());
+        std::fprintf(stderr,
+                     "cache: nesting %d round %d: %zu primaries, %zu missed, %zu misses %.6f\n",
+                     nesting, round, sub.size(), again.size(), miss.size(), dt);
       if (!miss.empty()) make_records(miss, round);
       todo = std::move(again);
     }

@@ -22,6 +22,13 @@ public:
 
   const DeviceInfo& info() const { return info_; }
   bool zero_copy() const { return info_.host_unified_memory; }
+  // PoCL's CPU drivers run kernels on a zero-copy buffer's own host allocation, so once the
+  // queue is idle the host may copy in and out of it directly. A map/unmap pair instead is two
+  // commands through PoCL's worker threads, each waking them: on a small wave those wake-ups
+  // cost more than the shading. Other devices (integrated GPUs among them) keep map/unmap.
+  bool direct_host() const { return direct_host_; }
+  // Waits for the queue when commands are pending (before direct host access).
+  void sync();
 
   // Runs `kernel` over `items` work-items. The global size is rounded up to a multiple of the
   // work-group size (PoCL requires it), so every kernel bounds-checks its index against a count
@@ -36,6 +43,8 @@ private:
   DeviceInfo info_;
   _cl_context* context_ = nullptr;
   _cl_command_queue* queue_ = nullptr;
+  bool direct_host_ = false;
+  bool pending_ = false; // a kernel was enqueued since the last finish
 };
 
 // The device chosen by RADCL_DEVICE (see select_device), shared by the whole process.
