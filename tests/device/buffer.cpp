@@ -6,6 +6,7 @@
 
 #include "device_fixture.h"
 #include "radcl/device/buffer.h"
+#include "radcl/device/program.h"
 #include "radcl/util/error.h"
 
 using namespace radcl::device;
@@ -44,4 +45,30 @@ TEST(Buffer, MoveTransfersOwnership) {
   Buffer b(std::move(a));
   EXPECT_EQ(b.handle(), h);
   EXPECT_EQ(a.handle(), nullptr);
+}
+
+// Reads right after a launch see the kernel's output, and a host write before a launch does
+// not overtake it: on PoCL these copies bypass map/unmap (Context::direct_host), so they must
+// wait for the pending kernel themselves.
+TEST(Buffer, CopiesAroundLaunchesStayInOrder) {
+  Context& ctx = test_context();
+  Program prog(ctx, ProgramSource{{"probe/rng.cl"}, "", "-cl-std=CL1.2"});
+  Kernel k = prog.kernel("rc_rng_fill");
+  const std::uint32_t n = 1 << 16, dims = 1;
+  Buffer out(ctx, n * 4), u(ctx, n * 4), ref(ctx, n * 4);
+  std::vector<std::vector<std::uint32_t>> seen;
+  for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+    std::vector<std::uint32_t> junk(n, 0xDEADBEEFu);
+    out.write(junk.data(), n * 4); // overwritten by the launch that follows
+    k.arg(0, out).arg(1, u).arg(2, n).arg(3, dims).arg(4, seed);
+    ctx.run(k, n);
+    seen.push_back(out.to_vector<std::uint32_t>(n));
+  }
+  for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+    k.arg(0, ref).arg(1, u).arg(2, n).arg(3, dims).arg(4, seed);
+    ctx.run(k, n);
+    ctx.finish();
+    EXPECT_EQ(seen[seed - 1], ref.to_vector<std::uint32_t>(n)) << "seed " << seed;
+  }
+  EXPECT_NE(seen[0], seen[1]);
 }
