@@ -136,6 +136,7 @@ struct Renderer::Impl {
   // Room per ray in the shading pass's slots, set per wave by size_slots (any value gives the
   // same records; a good one makes re-shading rare and keeps the slots small).
   std::uint32_t cap_shadow = 16, cap_spawn = 2;
+  static constexpr std::size_t kUncountedWave = 2048;
   std::vector<device::Buffer> pool = std::vector<device::Buffer>(kSlots);
   device::Buffer& scratch(Slot slot, std::size_t bytes) {
     bytes = std::max<std::size_t>(bytes, 16);
@@ -962,7 +963,10 @@ struct Renderer::Impl {
 
   // Slot sizes for a wave: the counts of an even spread of its rays (at most 512 of them,
   // counted by rc_count), enough room for about 98% of them.
+  // A small wave keeps the last sizes: counting would cost it a launch and a second shading of
+  // each ray, more than re-shading its few rays that do not fit.
   void size_slots(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits) {
+    if (queue.size() <= kUncountedWave) return;
     std::size_t n = queue.size(), stride = std::max<std::size_t>(1, n / 512);
     std::vector<rc_ray> r;
     std::vector<rc_hit> h;
