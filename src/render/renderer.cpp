@@ -392,7 +392,15 @@ struct Renderer::Impl {
     const double sep =
         std::max(floor_sep, aa * settings.ambient_max_radius / std::ldexp(1.0, round));
     // Chosen points by grid cell of side `sep`: a neighbour within sep is in one of 27 cells.
-    std::map<std::array<std::int64_t, 4>, std::vector<const rc_ray*>> grid;
+    struct CellHash {
+      std::size_t operator()(const std::array<std::int64_t, 4>& c) const {
+        std::uint64_t h = 0x9E3779B97F4A7C15ull;
+        for (std::int64_t v : c)
+          h = (h ^ static_cast<std::uint64_t>(v)) * 0xBF58476D1CE4E5B9ull;
+        return static_cast<std::size_t>(h ^ (h >> 31));
+      }
+    };
+    std::unordered_map<std::array<std::int64_t, 4>, std::vector<const rc_ray*>, CellHash> grid;
     std::vector<const rc_ray*> chosen;
     auto cell = [&](const rc_ray& m, int dx, int dy, int dz) {
       return std::array<std::int64_t, 4>{static_cast<std::int64_t>(m.ambient_depth),
@@ -1326,8 +1334,8 @@ struct Renderer::Impl {
       shadow_step.arg(0, bcur).arg(1, bhits).arg(2, bstate).arg(3, um);
       set_scene_args(shadow_step, 4);
       ctx.run(shadow_step, m);
-      cur = bcur.to_vector<rc_shadow>(m);
-      state = bstate.to_vector<std::uint32_t>(m);
+      bcur.read(cur.data(), m * sizeof(rc_shadow)); // into place: no fresh, zeroed vectors
+      bstate.read(state.data(), m * sizeof(std::uint32_t));
 
       std::size_t k = 0;
       for (std::size_t i = 0; i < m; ++i) {
