@@ -6,7 +6,8 @@
 #   tests     the device-facing test executables on the GPU (stability suite first; TESTS
 #             names some instead, TEST_LIMIT is each one's time limit in seconds)
 #   bench     tests/bench/ambient_cache.sh on the GPU (Radiance alongside when it was bundled)
-#   bench-cpu the same on PoCL with every core
+#   bench-cpu the same on PoCL with every core (NO_RADIANCE=1: radcl alone)
+#   rounds    office_clear's cache build on the GPU, its rounds' time by size
 # usage: scripts/device-run.sh devices tests bench ...
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,7 +22,7 @@ export OCL_ICD_VENDORS=/tmp/vendors LD_LIBRARY_PATH=$b/lib POCL_CACHE_DIR=/tmp/p
   RADCL_CACHE_DIR=/tmp/radcl-cache RADCL_TEST_DATA=$root/tests/data RADCL_BIN=$b/bin \
   RADCL_SOURCE_DIR=$root RADCL_REFERENCE=$b/ref
 mkdir -p "$b/build" && ln -sfn "$b/bin" "$b/build/bin"
-[ -x "$b/radiance/rtrace" ] && export RADIANCE_BIN=$b/radiance RAYPATH=.:$b/radiance
+[ -x "$b/radiance/rtrace" ] && [ -z "${NO_RADIANCE:-}" ] && export RADIANCE_BIN=$b/radiance RAYPATH=.:$b/radiance
 
 tests() { # the stability suite, then the rest, each executable under a time limit
   local t s=0 f=0
@@ -46,5 +47,11 @@ for what in "$@"; do
   tests) RADCL_DEVICE=nvidia tests ;;
   bench) RADCL_DEVICE=nvidia "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
   bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;
+  rounds) (cd "$root/tests/data/scenes" && RADCL_DEVICE=nvidia RADCL_DEBUG_CACHE=1 "$b/bin/rtrace" \
+      -n "$(nproc)" -u- -h -I -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 office_clear.oct \
+      < office_grid.pts 2>&1 >/dev/null | awk '/round/ { n = $6
+      b = n < 64 ? "<64" : n < 1024 ? "<1024" : n < 8192 ? "<8192" : ">=8192"
+      c[b]++; t[b] += $12; r[b] += n }
+      END { for (k in c) printf "rays %s: %d rounds, %.3f s, %d rays\n", k, c[k], t[k], r[k] }') ;;
   esac
 done

@@ -108,6 +108,8 @@ public:
     flow_ = options::RayFlow(opt_.xres, opt_.yres); // each persistent job starts afresh
     options::RayReader reader(in, opt_.in_format);
     std::vector<PendingRay> batch;
+    building_ = renderer_ && renderer_->builds_cache();
+    since_flush_ = 0;
     bool done = false;
     while (!done) {
       PendingRay p;
@@ -123,9 +125,22 @@ public:
         batch.push_back(p);
       }
       // Answer what we have when input pauses, a wave is full, or input ends: results reach a
-      // co-process before it sends more.
+      // co-process before it sends more. While the cache is being built, a batch's records come
+      // from its own misses, so batches end only where the input itself says: at Radiance's
+      // flush points (a zero-direction ray, every -x rays when -y is 0 or -x is 1), a full wave
+      // or the end. The output then does not depend on input timing; a co-process flushes as
+      // it must with Radiance's rtrace, which answers at those points alone.
       std::size_t record = opt_.in_format == 'f' ? 24 : opt_.in_format == 'd' ? 48 : 0;
-      if (!got || batch.size() >= kWave || !buf.ready(record)) done = process(batch) || !got;
+      if (got) ++since_flush_;
+      bool answer = !got || batch.size() >= kWave;
+      if (!answer && building_) {
+        const long every = flow_.flush_interval();
+        answer = (!batch.back().bad && batch.back().length == 0) ||
+                 (every > 0 && since_flush_ % static_cast<unsigned long>(every) == 0);
+      } else if (!answer) {
+        answer = !buf.ready(record);
+      }
+      if (answer) done = process(batch) || !got;
       if (!got) break;
     }
     if (!done) process(batch);
@@ -159,7 +174,9 @@ private:
   options::RayFlow flow_;
   std::string out_;
   bool warned_bad_ = false;
-  std::uint32_t next_id_ = 0; // rays read so far (keys the random numbers)
+  bool building_ = false;         // batches end at the input's flush points (see run)
+  unsigned long since_flush_ = 0; // records read in this run, for -x flush points
+  std::uint32_t next_id_ = 0;     // rays read so far (keys the random numbers)
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 
   // Traces and writes a batch; true when the -x/-y count has been reached.

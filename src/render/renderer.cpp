@@ -1365,6 +1365,9 @@ Renderer::~Renderer() = default;
 void Renderer::render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
   impl_->render(rays, results);
 }
+bool Renderer::builds_cache() const {
+  return impl_->building;
+}
 std::vector<ambient::AmbientRecord> Renderer::take_new_records() {
   return std::exchange(impl_->made, {});
 }

@@ -1,4 +1,6 @@
-// rtrace as a co-process: each answer arrives before the next ray is sent.
+// rtrace as a co-process: each answer arrives before the next ray is sent. While it builds an
+// irradiance cache it answers at Radiance's flush points only (a zero-direction ray, -x 1), so
+// that its output does not depend on input timing (tests/cli/stability_determinism.cpp).
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -73,6 +75,35 @@ TEST(RtraceStreaming, AnswersEachRayBeforeTheNext) {
     double v[3];
     ASSERT_EQ(std::sscanf(line.c_str(), "%le %le %le", &v[0], &v[1], &v[2]), 3) << line;
     EXPECT_GT(v[1], 0.0) << line;
+  }
+  EXPECT_EQ(p.finish(), 0);
+}
+
+// Building a cache: a ray followed by a flush request (a zero direction) is answered before
+// the next one is sent, and so is each ray with -x 1; both as Radiance's rtrace answers.
+TEST(RtraceStreaming, BuildingACacheAnswersAtFlushPoints) {
+  const std::string rtrace = radcl::test::bin_dir() + "/rtrace";
+  const char* rays[] = {"1.5 1.5 0.75 0 0 1\n", "4 3 0.75 0 0 1\n"};
+  {
+    CoProcess p(radcl::test::data("scenes"), {rtrace, "-h", "-I", "-ab", "1", "-aa", "0.2", "-ad",
+                                              "64", "-as", "0", "-u-", "luminaires.oct"});
+    for (const char* r : rays) {
+      std::string in = std::string(r) + "0 0 0 0 0 0\n";
+      ASSERT_EQ(write(p.to, in.data(), in.size()), static_cast<ssize_t>(in.size()));
+      std::string line = p.read_line(60000);
+      ASSERT_FALSE(line.empty()) << "no answer to " << r;
+      const std::string empty = p.read_line(60000);
+      double v[3] = {1, 1, 1};
+      ASSERT_EQ(std::sscanf(empty.c_str(), "%le %le %le", &v[0], &v[1], &v[2]), 3) << empty;
+      EXPECT_EQ(v[0] + v[1] + v[2], 0.0) << "the flush request's empty record: " << empty;
+    }
+    EXPECT_EQ(p.finish(), 0);
+  }
+  CoProcess p(radcl::test::data("scenes"), {rtrace, "-h", "-I", "-ab", "1", "-aa", "0.2", "-ad",
+                                            "64", "-as", "0", "-u-", "-x", "1", "luminaires.oct"});
+  for (const char* r : rays) {
+    ASSERT_EQ(write(p.to, r, std::strlen(r)), static_cast<ssize_t>(std::strlen(r)));
+    ASSERT_FALSE(p.read_line(60000).empty()) << "no answer to " << r << " with -x 1";
   }
   EXPECT_EQ(p.finish(), 0);
 }

@@ -126,6 +126,8 @@ public:
   // Irradiance-cache records made since the last call (RenderSettings::make_records), in world
   // coordinates, for the -af file.
   std::vector<ambient::AmbientRecord> take_new_records();
+  // True when misses become records: then a batch's values depend on which rays share it.
+  bool builds_cache() const;
   // Adds records other processes wrote to the shared -af file.
   void add_records(std::span<const ambient::AmbientRecord> records);
 
