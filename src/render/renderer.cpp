@@ -1280,22 +1280,16 @@ struct Renderer::Impl {
   // reused rather than freshly mapped and cleared.
   std::vector<std::uint8_t> trace_shadows(std::vector<rc_shadow>& shadows) {
     constexpr std::size_t kChunk = 1u << 18;
-    if (shadows.size() <= kChunk) return trace_shadow_chunk(shadows);
-    std::vector<std::uint8_t> blocked(shadows.size());
-    std::vector<rc_shadow> part;
-    for (std::size_t a = 0; a < shadows.size(); a += kChunk) {
-      std::size_t b = std::min(shadows.size(), a + kChunk);
-      part.assign(shadows.begin() + static_cast<long>(a), shadows.begin() + static_cast<long>(b));
-      std::vector<std::uint8_t> bl = trace_shadow_chunk(part);
-      std::copy(part.begin(), part.end(), shadows.begin() + static_cast<long>(a));
-      std::copy(bl.begin(), bl.end(), blocked.begin() + static_cast<long>(a));
-    }
+    std::vector<std::uint8_t> blocked(shadows.size(), 1);
+    for (std::size_t a = 0; a < shadows.size(); a += kChunk)
+      trace_shadow_chunk(shadows.data() + a, std::min(kChunk, shadows.size() - a),
+                         blocked.data() + a);
     return blocked;
   }
 
-  std::vector<std::uint8_t> trace_shadow_chunk(std::vector<rc_shadow>& shadows) {
-    std::size_t n = shadows.size();
-    std::vector<std::uint8_t> blocked(n, 1);
+  // Rays [shadows, shadows + n): contributions written back in place, blocked[i] cleared for
+  // each one that reached its source.
+  void trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::uint8_t* blocked) {
     std::vector<std::uint32_t> slot;
     std::vector<rc_shadow> cur;
     // Estimates and empty slots of the -dt selection (source RC_NONE) are not rays.
@@ -1354,7 +1348,6 @@ struct Renderer::Impl {
       state.resize(k);
       slot.resize(k);
     }
-    return blocked;
   }
 };
 
