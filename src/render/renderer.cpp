@@ -20,6 +20,7 @@
 #include "radcl/render/ambient_cache.h"
 #include "radcl/render/ambient_leaks.h"
 #include "radcl/render/ambient_record.h"
+#include "radcl/render/id_slots.h"
 #include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
 #include "radcl/rng.h"
@@ -334,23 +335,35 @@ struct Renderer::Impl {
     std::vector<std::uint32_t> todo(rays.size());
     for (std::size_t i = 0; i < todo.size(); ++i)
       todo[i] = static_cast<std::uint32_t>(i);
+    const bool have_ids =
+        std::none_of(rays.begin(), rays.end(), [](const PrimaryRay& r) { return r.id == RC_NONE; });
     for (int round = 0; !todo.empty(); ++round) {
       const bool last = round >= kRounds;
-      std::vector<PrimaryRay> sub;
+      // The first pass renders every ray in place; later ones the copies of those that missed.
+      const bool whole = round == 0 && have_ids;
+      std::vector<PrimaryRay> sub_rays;
       std::vector<RayStart> sub_start;
-      std::unordered_map<std::uint32_t, std::uint32_t> at;
-      for (std::uint32_t i : todo) {
-        PrimaryRay r = rays[i];
-        if (r.id == RC_NONE) r.id = i; // the same random numbers in every pass
-        at[r.id] = static_cast<std::uint32_t>(sub.size());
-        sub.push_back(r);
-        if (!st.empty()) sub_start.push_back(st[i]);
-      }
-      std::vector<PrimaryResult> res(sub.size());
+      std::vector<PrimaryResult> sub_res;
+      std::vector<std::uint32_t> ids;
+      if (!whole)
+        for (std::uint32_t i : todo) {
+          PrimaryRay r = rays[i];
+          if (r.id == RC_NONE) r.id = i; // the same random numbers in every pass
+          sub_rays.push_back(r);
+          if (!st.empty()) sub_start.push_back(st[i]);
+        }
+      const std::span<const PrimaryRay> sub = whole ? rays : std::span<const PrimaryRay>(sub_rays);
+      if (!whole) sub_res.resize(sub.size());
+      const std::span<PrimaryResult> res = whole ? results : std::span<PrimaryResult>(sub_res);
+      ids.reserve(sub.size());
+      for (const PrimaryRay& r : sub)
+        ids.push_back(r.id);
+      IdSlots at;
+      at.assign(ids);
       const bool saved_tree = tree;
       const std::span<const RayStart> saved_starts = starts;
       if (!last) tree = false; // nothing is super-sampled while misses are only reported
-      starts = sub_start;
+      starts = whole ? st : std::span<const RayStart>(sub_start);
       set_collect(!last);
       misses.clear();
       const auto t0 = std::chrono::steady_clock::now();
@@ -369,7 +382,7 @@ struct Renderer::Impl {
       for (std::size_t k = 0; k < sub.size(); ++k)
         if (missed[k])
           again.push_back(todo[k]);
-        else
+        else if (!whole)
           results[todo[k]] = std::move(res[k]);
       if (std::getenv("RADCL_DEBUG_CACHE"))
         std::fprintf(stderr,
@@ -742,7 +755,7 @@ struct Renderer::Impl {
   // Result slot of a primary id in the current batch: ids are input indices unless the
   // caller gave its own (then they are looked up).
   std::size_t batch_first = 0;
-  std::unordered_map<std::uint32_t, std::uint32_t> id_slot;
+  IdSlots id_slot;
   std::vector<Vec3d>* mirrored = nullptr; // the batch's mirrored sums, per primary
   std::span<PrimaryResult> results;       // the batch's results
   std::vector<std::uint32_t> root_depth;  // reflection depth of the batch's first rays
@@ -754,14 +767,13 @@ struct Renderer::Impl {
                     std::size_t first_index) {
     batch_first = first_index;
     id_slot.clear();
-    for (std::size_t i = 0; i < prim.size(); ++i)
-      if (prim[i].id != RC_NONE) {
-        for (std::size_t k = 0; k < prim.size(); ++k)
-          id_slot[prim[k].id != RC_NONE ? prim[k].id
-                                        : static_cast<std::uint32_t>(first_index + k)] =
-              static_cast<std::uint32_t>(k);
-        break;
-      }
+    if (std::any_of(prim.begin(), prim.end(),
+                    [](const PrimaryRay& r) { return r.id != RC_NONE; })) {
+      std::vector<std::uint32_t> ids(prim.size());
+      for (std::size_t k = 0; k < prim.size(); ++k)
+        ids[k] = prim[k].id != RC_NONE ? prim[k].id : static_cast<std::uint32_t>(first_index + k);
+      id_slot.assign(ids);
+    }
     std::vector<rc_ray> queue(prim.size());
     std::vector<rc_hit> hits;
     leak_lists.assign(1, 0u);
