@@ -1,12 +1,14 @@
 // Slot of a ray id within one batch: the renderer's rays carry ids (their random numbers' key)
 // that are mostly a compact range (input indices, a call's hemisphere samples), so a flat table
 // over [min, max] answers in one load and holds 4 bytes per id; scattered ids fall back to a
-// hash map. It replaces an unordered_map that cost more than the shading on big waves.
+// hash map. A hash map over the millions of samples of one cache-build round cost time and
+// memory.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
