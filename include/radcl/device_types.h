@@ -281,14 +281,19 @@ typedef struct rc_amb_record {
 } rc_amb_record;
 
 /* A node of the BVH over the records' discs, depth first: an inner node's first child follows
- * it, `skip` is the index after its subtree; a leaf lists records [first, first + count). */
+ * it, `skip` is the index after its subtree; a leaf lists records [first, first + count). The
+ * nodes are a forest, one tree per orientation bin (2 x a normal's dominant axis, + 1 where
+ * that component is negative): a node of a bin's tree holds records whose normals lie within
+ * its cone, half-angle h (cos h in lo.w, sin h in hi.w) about the bin's axis, so a lookup
+ * skips the trees of surfaces facing other ways. */
+#define RC_AMB_BINS 6u
 typedef struct rc_amb_node {
-  rc_float4 lo;  /* box; w unused */
-  rc_float4 hi;
+  rc_float4 lo; /* box; w = cos of the normal cone's half-angle */
+  rc_float4 hi; /* box; w = its sine */
   rc_u32 skip;
   rc_u32 first;
   rc_u32 count; /* 0 for an inner node */
-  rc_u32 pad0;
+  rc_u32 bin;   /* 0..5: the axis is bin / 2, its negative where bin is odd */
 } rc_amb_node;
 
 /* One hemisphere of ambient samples to turn into a record (kernels/render/ambient_record.cl,
@@ -360,7 +365,7 @@ typedef struct rc_rng_key {
   F(rc_params, irradiance_material) F(rc_params, ad) F(rc_params, as) F(rc_params, amb)       \
   F(rc_amb_record, pos) F(rc_amb_record, nrm) F(rc_amb_record, udir) F(rc_amb_record, val)     \
   F(rc_amb_record, grad) F(rc_amb_node, lo) F(rc_amb_node, hi) F(rc_amb_node, skip)            \
-  F(rc_amb_node, first) F(rc_amb_node, count) F(rc_amb_node, pad0)              \
+  F(rc_amb_node, first) F(rc_amb_node, count) F(rc_amb_node, bin)              \
   F(rc_amb_hemi, pos) F(rc_amb_hemi, nrm) F(rc_amb_hemi, ux) F(rc_amb_hemi, uy)                \
   F(rc_amb_hemi, first) F(rc_amb_hemi, ns) F(rc_amb_hemi, level) F(rc_amb_hemi, pad0)          \
   F(rc_amb_sample, val) F(rc_amb_sample, pnt) F(rc_amb_made, corral) F(rc_amb_made, status)    \

@@ -51,40 +51,65 @@ rc_float4 f4(double x, double y, double z, double w) {
           static_cast<float>(w)};
 }
 
+// The orientation bin of a unit normal: twice its dominant axis, plus one where that component
+// is negative (rc_amb_node).
+std::uint32_t normal_bin(const rc_float4& n) {
+  const float a[3] = {std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)};
+  const int k = a[0] >= a[1] && a[0] >= a[2] ? 0 : (a[1] >= a[2] ? 1 : 2);
+  const float c = k == 0 ? n.x : (k == 1 ? n.y : n.z);
+  return static_cast<std::uint32_t>(2 * k + (c < 0 ? 1 : 0));
+}
+// Cosine of the angle between unit n and the axis of `bin`.
+double axis_cos(const rc_float4& n, std::uint32_t bin) {
+  const double c = bin < 2 ? n.x : (bin < 4 ? n.y : n.z);
+  return bin & 1u ? -c : c;
+}
+
 class Flattener {
 public:
   Flattener(const std::vector<rc_amb_record>& in, const std::vector<std::uint32_t>& corral,
-            const std::vector<std::uint32_t>& source, AmbientCacheBuffers& out)
-      : in_(in), corral_(corral), source_(source), out_(out) {}
+            const std::vector<std::uint32_t>& source, std::uint32_t bin, AmbientCacheBuffers& out)
+      : in_(in), corral_(corral), source_(source), bin_(bin), out_(out) {}
 
-  // Appends `node` (whose box is `box`) and its subtree.
-  void add(const Node* node, const RTCBounds& box) {
+  // Appends `node` (whose box is `box`) and its subtree; returns the cosine of the subtree's
+  // normal cone about the bin's axis.
+  double add(const Node* node, const RTCBounds& box) {
     const std::size_t at = out_.nodes.size();
     rc_amb_node n{};
     n.lo = f4(box.lower_x, box.lower_y, box.lower_z, 0);
     n.hi = f4(box.upper_x, box.upper_y, box.upper_z, 0);
+    n.bin = bin_;
     out_.nodes.push_back(n);
+    double c = 1;
     if (node->leaf) {
       const Leaf* l = static_cast<const Leaf*>(node);
       out_.nodes[at].first = static_cast<std::uint32_t>(out_.records.size());
       out_.nodes[at].count = l->n;
       for (unsigned i = 0; i < l->n; ++i) {
-        out_.records.push_back(in_[l->ids[i]]);
+        const rc_amb_record& r = in_[l->ids[i]];
+        c = std::min(c, axis_cos(r.nrm, bin_));
+        out_.records.push_back(r);
         out_.corral.push_back(corral_[l->ids[i]]);
         out_.source.push_back(source_[l->ids[i]]);
       }
     } else {
       const Inner* in = static_cast<const Inner*>(node);
       for (int k = 0; k < 2; ++k)
-        if (in->kids[k]) add(in->kids[k], in->box[k]);
+        if (in->kids[k]) c = std::min(c, add(in->kids[k], in->box[k]));
     }
+    // A little wider than the records' own cone: float normals and the tests' rounding.
+    const double h = std::acos(std::clamp(c, -1.0, 1.0)) + 1e-3;
+    out_.nodes[at].lo.w = static_cast<float>(std::cos(h));
+    out_.nodes[at].hi.w = static_cast<float>(std::sin(h));
     out_.nodes[at].skip = static_cast<std::uint32_t>(out_.nodes.size());
+    return c;
   }
 
 private:
   const std::vector<rc_amb_record>& in_;
   const std::vector<std::uint32_t>& corral_;
   const std::vector<std::uint32_t>& source_;
+  std::uint32_t bin_;
   AmbientCacheBuffers& out_;
 };
 
@@ -143,51 +168,57 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
   }
   if (recs.empty()) return out;
 
-  RTCBounds all{};
-  all.lower_x = all.lower_y = all.lower_z = INFINITY;
-  all.upper_x = all.upper_y = all.upper_z = -INFINITY;
-  for (const RTCBuildPrimitive& b : prims) {
-    all.lower_x = std::min(all.lower_x, b.lower_x);
-    all.lower_y = std::min(all.lower_y, b.lower_y);
-    all.lower_z = std::min(all.lower_z, b.lower_z);
-    all.upper_x = std::max(all.upper_x, b.upper_x);
-    all.upper_y = std::max(all.upper_y, b.upper_y);
-    all.upper_z = std::max(all.upper_z, b.upper_z);
-  }
-
+  // One tree per orientation bin, in bin order (rc_amb_node).
   RTCDevice dev = rtcNewDevice(nullptr);
   if (!dev) throw FatalError("cannot create an Embree device for the ambient cache");
-  RTCBVH bvh = rtcNewBVH(dev);
-  RTCBuildArguments a = rtcDefaultBuildArguments();
-  a.byteSize = sizeof(a);
-  a.buildFlags = RTC_BUILD_FLAG_NONE;
-  a.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
-  a.maxBranchingFactor = 2;
-  a.maxDepth = 1024;
-  a.sahBlockSize = 1;
-  a.minLeafSize = 1;
-  a.maxLeafSize = kMaxLeaf;
-  a.traversalCost = 1.0f;
-  a.intersectionCost = 1.0f;
-  a.bvh = bvh;
-  a.primitives = prims.data();
-  a.primitiveCount = prims.size();
-  a.primitiveArrayCapacity = prims.size();
-  a.createNode = create_node;
-  a.setNodeChildren = set_children;
-  a.setNodeBounds = set_bounds;
-  a.createLeaf = create_leaf;
-  void* root = rtcBuildBVH(&a);
-  if (!root) {
-    rtcReleaseBVH(bvh);
-    rtcReleaseDevice(dev);
-    throw FatalError("cannot build the ambient cache's BVH");
-  }
   out.records.reserve(recs.size());
   out.corral.reserve(recs.size());
   out.source.reserve(recs.size());
-  Flattener(recs, corral, source, out).add(static_cast<const Node*>(root), all);
-  rtcReleaseBVH(bvh);
+  for (std::uint32_t bin = 0; bin < RC_AMB_BINS; ++bin) {
+    std::vector<RTCBuildPrimitive> part;
+    for (const RTCBuildPrimitive& b : prims)
+      if (normal_bin(recs[b.primID].nrm) == bin) part.push_back(b);
+    if (part.empty()) continue;
+    RTCBounds all{};
+    all.lower_x = all.lower_y = all.lower_z = INFINITY;
+    all.upper_x = all.upper_y = all.upper_z = -INFINITY;
+    for (const RTCBuildPrimitive& b : part) {
+      all.lower_x = std::min(all.lower_x, b.lower_x);
+      all.lower_y = std::min(all.lower_y, b.lower_y);
+      all.lower_z = std::min(all.lower_z, b.lower_z);
+      all.upper_x = std::max(all.upper_x, b.upper_x);
+      all.upper_y = std::max(all.upper_y, b.upper_y);
+      all.upper_z = std::max(all.upper_z, b.upper_z);
+    }
+    RTCBVH bvh = rtcNewBVH(dev);
+    RTCBuildArguments a = rtcDefaultBuildArguments();
+    a.byteSize = sizeof(a);
+    a.buildFlags = RTC_BUILD_FLAG_NONE;
+    a.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
+    a.maxBranchingFactor = 2;
+    a.maxDepth = 1024;
+    a.sahBlockSize = 1;
+    a.minLeafSize = 1;
+    a.maxLeafSize = kMaxLeaf;
+    a.traversalCost = 1.0f;
+    a.intersectionCost = 1.0f;
+    a.bvh = bvh;
+    a.primitives = part.data();
+    a.primitiveCount = part.size();
+    a.primitiveArrayCapacity = part.size();
+    a.createNode = create_node;
+    a.setNodeChildren = set_children;
+    a.setNodeBounds = set_bounds;
+    a.createLeaf = create_leaf;
+    void* root = rtcBuildBVH(&a);
+    if (!root) {
+      rtcReleaseBVH(bvh);
+      rtcReleaseDevice(dev);
+      throw FatalError("cannot build the ambient cache's BVH");
+    }
+    Flattener(recs, corral, source, bin, out).add(static_cast<const Node*>(root), all);
+    rtcReleaseBVH(bvh);
+  }
   rtcReleaseDevice(dev);
   if (out.records.size() != recs.size())
     throw FatalError("ambient cache BVH lost records"); // a leaf larger than kMaxLeaf
@@ -204,23 +235,13 @@ AmbientCacheBuffers join_ambient_caches(const AmbientCacheBuffers& a, const Ambi
       s += b_offset;
     return out;
   }
+  // The forests side by side: a's trees, then b's (the traversal walks one after another).
   const auto na = static_cast<std::uint32_t>(a.nodes.size());
   const auto ra = static_cast<std::uint32_t>(a.records.size());
-  out.nodes.reserve(1 + a.nodes.size() + b.nodes.size());
-  rc_amb_node root{};
-  const rc_amb_node &ta = a.nodes.front(), &tb = b.nodes.front();
-  root.lo =
-      f4(std::min(ta.lo.x, tb.lo.x), std::min(ta.lo.y, tb.lo.y), std::min(ta.lo.z, tb.lo.z), 0);
-  root.hi =
-      f4(std::max(ta.hi.x, tb.hi.x), std::max(ta.hi.y, tb.hi.y), std::max(ta.hi.z, tb.hi.z), 0);
-  root.skip = static_cast<std::uint32_t>(1 + a.nodes.size() + b.nodes.size());
-  out.nodes.push_back(root);
-  for (rc_amb_node n : a.nodes) {
-    n.skip += 1;
-    out.nodes.push_back(n);
-  }
+  out.nodes.reserve(a.nodes.size() + b.nodes.size());
+  out.nodes = a.nodes;
   for (rc_amb_node n : b.nodes) {
-    n.skip += 1 + na;
+    n.skip += na;
     if (n.count) n.first += ra;
     out.nodes.push_back(n);
   }

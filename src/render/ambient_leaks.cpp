@@ -108,13 +108,15 @@ std::size_t LeakTester::find(const LeakLookup& q, const SegmentBlocked& segment_
   const float aa = aa_;
   // The kernel's tests, a little wider so that every record it accepts is looked at: its
   // direction test uses the shading normal (perturbed by textures, reversed for the back of
-  // translucent surfaces), which the host does not know.
+  // translucent surfaces), which the host does not know unless no texture applies.
   float maxangle = static_cast<float>(10.0 * kPi / 180.0) + aa;
   if (q.weight < 0.6f)
     maxangle = (maxangle - static_cast<float>(kPi / 2)) * std::pow(q.weight, 0.13f) +
                static_cast<float>(kPi / 2);
-  const double wide = std::min(kPi / 2, static_cast<double>(maxangle) + 0.5);
-  const double mincos = std::cos(wide) - 1e-6;
+  // The kernel accepts a chord 2 - 2 cos(angle) below maxangle^2: angles to 2 asin(maxangle / 2).
+  const double reach = 2 * std::asin(std::min(1.0, 0.5 * static_cast<double>(maxangle)));
+  const double wide = std::min(kPi / 2, reach + (q.exact_normal ? 1e-3 : 0.5));
+  const double cwide = std::cos(wide), swide = std::sin(wide), mincos = cwide - 1e-6;
   const double behind = -(static_cast<double>(minarad_) * aa + 0.001) * 1.001 - 1e-6;
   const double lim2 = static_cast<double>(aa) * aa * 1.001;
   const V3 p = {q.point[0], q.point[1], q.point[2]};
@@ -124,7 +126,8 @@ std::size_t LeakTester::find(const LeakLookup& q, const SegmentBlocked& segment_
   for (std::uint32_t i = 0; i < nn;) {
     const rc_amb_node& nd = nodes[i];
     if (q.point[0] < nd.lo.x || q.point[1] < nd.lo.y || q.point[2] < nd.lo.z ||
-        q.point[0] > nd.hi.x || q.point[1] > nd.hi.y || q.point[2] > nd.hi.z) {
+        q.point[0] > nd.hi.x || q.point[1] > nd.hi.y || q.point[2] > nd.hi.z ||
+        !node_cone_may_hold(nd, q.normal, cwide, swide, true)) {
       i = nd.skip;
       continue;
     }

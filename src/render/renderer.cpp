@@ -22,6 +22,7 @@
 #include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
 #include "radcl/rng.h"
+#include "radcl/scene/object_type.h"
 #include "radcl/util/error.h"
 
 #include <tbb/blocked_range.h>
@@ -761,6 +762,15 @@ struct Renderer::Impl {
     return id_slot.empty() ? primary - batch_first : id_slot.at(primary);
   }
 
+  // How far along its direction an -I meter at world point p sits in front of it: Radiance's
+  // fixed 1e-4, but at least four float steps of the re-centred point (in mm, 5 m from the
+  // centre, 1e-4 is below them: 2% off); docs/departures.md.
+  double meter_offset(const Vec3d& p) const {
+    const double far = std::max(
+        {std::fabs(p[0] - centre[0]), std::fabs(p[1] - centre[1]), std::fabs(p[2] - centre[2])});
+    return std::isfinite(far) ? std::max(1e-4, 5e-7 * far) : 1e-4;
+  }
+
   void render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
                     std::size_t first_index) {
     batch_first = first_index;
@@ -807,13 +817,14 @@ struct Renderer::Impl {
       root_depth[i] = r.depth;
     }
     if (settings.irradiance_I && nesting == 0) {
-      // The measurement point is a diffuse meter facing the given direction (1e-4 along it,
-      // where Radiance's reversed primary ray meets it).
+      // The measurement point is a diffuse meter facing the given direction, meter_offset()
+      // along it (where Radiance's reversed primary ray meets it).
       hits.resize(prim.size());
       for (std::size_t i = 0; i < prim.size(); ++i) {
         Vec3d d = unit(prim[i].dir);
-        Vec3d p = {prim[i].org[0] + 1e-4 * d[0], prim[i].org[1] + 1e-4 * d[1],
-                   prim[i].org[2] + 1e-4 * d[2]};
+        const double off = meter_offset(prim[i].org);
+        Vec3d p = {prim[i].org[0] + off * d[0], prim[i].org[1] + off * d[1],
+                   prim[i].org[2] + off * d[2]};
         rc_hit& h = hits[i];
         h = rc_hit{};
         h.pos = f4(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2], 1e-5);
@@ -1196,6 +1207,13 @@ struct Renderer::Impl {
           }
           LeakLookup q;
           q.point = {h.pos.x, h.pos.y, h.pos.z};
+          if (h.surface == RC_SURF_IRRADIANCE) {
+            q.exact_normal = true;
+          } else {
+            const rc_material& m = cs.materials[cs.surfaces[h.surface].material];
+            q.exact_normal =
+                m.npatterns == 0 && !scene::is_mixture(static_cast<scene::ObjectType>(m.type));
+          }
           // The normal facing the ray (a -I meter faces its given direction).
           const double f = h.surface == RC_SURF_IRRADIANCE || h.front ? 1.0 : -1.0;
           q.normal = {f * h.nrm.x, f * h.nrm.y, f * h.nrm.z};

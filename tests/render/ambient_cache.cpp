@@ -63,6 +63,10 @@ std::size_t check_tree(const render::AmbientCacheBuffers& b, double aa) {
         up.push_back(i);
         for (std::size_t a : up) {
           const rc_amb_node& box = b.nodes[a];
+          // The record's normal inside the node's cone (cos h in lo.w) about its bin's axis.
+          const float ax = box.bin < 2 ? n[0] : (box.bin < 4 ? n[1] : n[2]);
+          EXPECT_GE(box.bin & 1u ? -ax : ax, box.lo.w) << "node " << a;
+          EXPECT_NEAR(box.lo.w * box.lo.w + box.hi.w * box.hi.w, 1.0f, 1e-5f);
           const float lo[3] = {box.lo.x, box.lo.y, box.lo.z},
                       hi[3] = {box.hi.x, box.hi.y, box.hi.z};
           for (int c = 0; c < 3; ++c) {
@@ -106,6 +110,66 @@ TEST(AmbientCacheBvh, EveryRecordOnceInsideItsAncestors) {
       }
     EXPECT_TRUE(found);
   }
+}
+
+// A walk that skips the nodes whose boxes miss the point or whose normal cones cannot come
+// within theta of the lookup's normal still meets every record within theta that covers the
+// point (the kernel's lookup and the leak test walk so).
+TEST(AmbientCacheBvh, NormalConesKeepEveryAcceptableRecord) {
+  auto recs = random_records(3000, 5u);
+  // Surfaces of a room as well: many records share an axis-aligned normal.
+  for (int i = 0; i < 1000; ++i) {
+    ambient::AmbientRecord a = recs[static_cast<std::size_t>(i)];
+    const int k = i % 6;
+    ambient::Dir nd{0, 0, 0}, ud{0, 0, 0};
+    nd[k / 2] = k % 2 ? -1 : 1;
+    ud[(k / 2 + 1) % 3] = 1;
+    a.ndir = ambient::encode_dir(nd);
+    a.udir = ambient::encode_dir(ud);
+    a.val = {float(3000 + i), 0, 0};
+    recs.push_back(a);
+  }
+  const double aa = 0.2;
+  render::AmbientCacheBuffers b = render::build_ambient_cache(recs, {0, 0, 0}, aa);
+  check_tree(b, aa);
+  std::mt19937 g(11);
+  std::uniform_real_distribution<double> s(-1, 1), th(0.0, 1.5707963);
+  std::size_t found = 0, skipped = 0;
+  for (int q = 0; q < 1000; ++q) {
+    const rc_amb_record& r = b.records[static_cast<std::size_t>(q) * 7 % b.records.size()];
+    const float p[3] = {r.pos.x + 0.01f * float(s(g)), r.pos.y, r.pos.z};
+    std::array<double, 3> n{s(g), s(g), s(g)};
+    if (q % 2) n = {r.nrm.x + 0.3 * s(g), r.nrm.y + 0.3 * s(g), r.nrm.z + 0.3 * s(g)};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& c : n)
+      c /= l;
+    const double theta = th(g), ct = std::cos(theta), st = std::sin(theta);
+    std::set<std::uint32_t> walked;
+    for (std::uint32_t i = 0; i < b.nodes.size();) {
+      const rc_amb_node& nd = b.nodes[i];
+      if (p[0] < nd.lo.x || p[1] < nd.lo.y || p[2] < nd.lo.z || p[0] > nd.hi.x || p[1] > nd.hi.y ||
+          p[2] > nd.hi.z || !render::node_cone_may_hold(nd, n, ct, st, false)) {
+        skipped += nd.skip - i;
+        i = nd.skip;
+        continue;
+      }
+      for (std::uint32_t k = nd.first; k < nd.first + nd.count; ++k)
+        walked.insert(k);
+      i = nd.count ? nd.skip : i + 1;
+    }
+    for (std::uint32_t k = 0; k < b.records.size(); ++k) {
+      const rc_amb_record& a = b.records[k];
+      const double d = a.nrm.x * n[0] + a.nrm.y * n[1] + a.nrm.z * n[2];
+      const double dx = p[0] - a.pos.x, dy = p[1] - a.pos.y, dz = p[2] - a.pos.z;
+      const double reach = 0.9 * aa * std::min(a.nrm.w, a.udir.w);
+      if (d > ct + 1e-6 && dx * dx + dy * dy + dz * dz < reach * reach) {
+        EXPECT_TRUE(walked.count(k)) << "query " << q << " record " << k;
+        ++found;
+      }
+    }
+  }
+  EXPECT_GT(found, 500u) << found; // the queries do meet records
+  EXPECT_GT(skipped, 0u);
 }
 
 TEST(AmbientCacheBvh, NoRecordsNoNodes) {

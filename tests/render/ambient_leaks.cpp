@@ -131,6 +131,29 @@ TEST(AmbientLeaks, RecordsTheKernelRejectsAreNotTested) {
   EXPECT_EQ(s.calls, 3);
 }
 
+// Without a texture the tester knows the kernel's normal: it tests every record the kernel's
+// direction test accepts (a chord 2 - 2 cos(angle) below maxangle^2, so angles a little past
+// maxangle) and skips the orientation trees of surfaces facing elsewhere.
+TEST(AmbientLeaks, ExactNormalsTestEveryRecordTheKernelAccepts) {
+  std::vector<ambient::AmbientRecord> recs = {record(~0u)};
+  render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);
+  render::LeakTester t(&cache, kAa, kMinarad);
+  const double maxangle = 10 * 3.14159265358979323846 / 180 + kAa;
+  const double reach = 2 * std::asin(maxangle / 2); // the kernel's widest accepted angle
+  auto tilted = [&](double ang) {
+    LeakLookup q = at(0.05f, 0.05f);
+    q.normal = {std::sin(ang), 0, std::cos(ang)};
+    q.exact_normal = true;
+    Segments s;
+    std::vector<std::uint32_t> out;
+    t.find(q, s.fn(), out);
+    return s.calls;
+  };
+  EXPECT_EQ(tilted(maxangle + 0.5 * (reach - maxangle)), 1);
+  EXPECT_EQ(tilted(reach + 0.01), 0);
+  EXPECT_EQ(tilted(1.2), 0);
+}
+
 TEST(AmbientLeaks, UnmarkedCacheIsInactive) {
   std::vector<ambient::AmbientRecord> recs = {record(0)};
   render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);

@@ -16,12 +16,15 @@
 namespace radcl::render {
 
 // A lookup the kernel may make at a hit: the point as the kernel sees it (re-centred, float),
-// the surface normal facing the ray (Radiance's r->ron), the ray's ambient level and weight.
+// the surface normal facing the ray (Radiance's r->ron), the ray's ambient level and weight;
+// `exact_normal` where the kernel looks up with that normal or its reverse (no texture
+// perturbs it), so the tester need not widen its direction test.
 struct LeakLookup {
   std::array<float, 3> point;
   std::array<double, 3> normal;
   std::uint32_t level = 0;
   float weight = 1;
+  bool exact_normal = false;
 };
 
 // Whether a segment from `org` (re-centred, on a surface whose normal on the segment's side is
