@@ -105,6 +105,10 @@ typedef struct rc_out {
   /* Cache records the host's leak tests rule out at this hit: [count, index...], or null. */
   global const uint* blocked;
   float3 ng; /* the hit's geometric normal: rays leave from beside the surface (rc_leave) */
+  /* The hit reported a cache miss: the host shades its primary again once records exist and
+   * drops this value, so its direct part (shadow rays, the bulk of a miss's cost) is skipped.
+   * Its spawned rays stay: they may report misses of their own. */
+  int doomed;
 } rc_out;
 
 static inline void rc_out_init(rc_out* o, int write) {
@@ -117,6 +121,7 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->super = 0;
   o->blocked = 0;
   o->ng = (float3)(0.0f);
+  o->doomed = 0;
   o->nhemi = 0;
   o->child = 0;
   o->pcol = (float3)(1.0f);
@@ -337,6 +342,7 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
       }
       if (!o->super)
         rc_emit_ray(o, r, p, n, acoef, RC_RAY_AMBMISS, 0.0f, r->coef.w, r->depth, r->ambient_depth);
+      o->doomed = 1;
       return (float3)(0.0f);
     }
   }
