@@ -139,7 +139,7 @@ static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* 
 static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, struct rc_brdf* b,
                       const rc_ray* r, float3 p, float3 n, float3 d, int flat, float3 coef,
                       float known, rc_rng_key key) {
-  if (o->super) return; /* the -as pass writes only super-samples */
+  if (o->super) return;  /* the -as pass writes only super-samples */
   if (o->doomed) return; /* a miss: this value will be dropped (rc_out) */
   const rc_params* P = &S->params;
   float eps = P->spec.z;
