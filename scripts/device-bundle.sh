@@ -16,10 +16,12 @@ stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 mkdir -p "$stage"/{bin,lib,ref,radiance}
 cp "$build"/bin/{radcl,rtrace,rpict,gensky} "$stage/bin/"
-for t in "$build"/bin/test_{render,cli,device,calc,ambient}_*; do cp "$t" "$stage/bin/"; done
+for t in "$build"/bin/test_{render,cli,device,calc,ambient}_*; do
+  if [ -e "$t" ]; then cp "$t" "$stage/bin/"; fi # a build of the programs alone has none
+done
 cp /usr/bin/time "$stage/bin/gnu-time"
 # Every library outside glibc and the C++ runtime, which that machine has in newer versions.
-ldd "$build"/bin/{radcl,rtrace,rpict} "$build"/bin/test_render_golden_ambient | awk '$3 ~ /^\// { print $3 }' |
+ldd "$build"/bin/{radcl,rtrace,rpict} $(ls "$build"/bin/test_render_golden_ambient 2>/dev/null) | awk '$3 ~ /^\// { print $3 }' |
   sort -u | grep -Ev '/(libc|libm|libgcc_s|libstdc\+\+|ld-linux[^/]*)\.so' |
   xargs -r cp -L -t "$stage/lib/"
 cp -r "$ref/results" "$stage/ref/"

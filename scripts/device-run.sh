@@ -8,6 +8,8 @@
 #   bench     tests/bench/ambient_cache.sh on the GPU (Radiance alongside when it was bundled)
 #   bench-cpu the same on PoCL with every core (NO_RADIANCE=1: radcl alone)
 #   rounds    office_clear's cache build on the GPU, its rounds' time by size
+#   profile   the benchmark's rtrace cases and rpict 256^2 on the GPU with RADCL_PROFILE=1: wall
+#             time by phase of the renderer's work (PROFILE_DEVICE=pocl: on PoCL instead)
 # usage: scripts/device-run.sh devices tests bench ...
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -40,6 +42,28 @@ tests() { # the stability suite, then the rest, each executable under a time lim
   echo "test executables: $s passed, $f failed"
 }
 
+profile() { # each case's wall time and the renderer's phases
+  local opts="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3" dev=${PROFILE_DEVICE:-nvidia}
+  cd "$root/tests/data/scenes" || return
+  head -n 1 office_grid.pts | RADCL_DEVICE=$dev "$b/bin/rtrace" -h -I $opts office_clear.oct > /dev/null
+  for c in office_clear:office_grid office_overcast:office_grid luminaires:luminaires_grid; do
+    echo "== ${c%%:*}"
+    head -n 1 "${c#*:}.pts" | RADCL_DEVICE=$dev "$b/bin/rtrace" -h -I $opts "${c%%:*}.oct" > /dev/null
+    RADCL_DEVICE=$dev RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user" "$b/bin/rtrace" \
+      -n "$(nproc)" -u- -h -I $opts "${c%%:*}.oct" < "${c#*:}.pts" > /dev/null
+  done
+  echo "== sphere -ab 4"
+  RADCL_DEVICE=$dev RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user" "$b/bin/rtrace" \
+    -n "$(nproc)" -u- -h -I -ab 4 -ad 1024 -as 256 -aa 0.1 -ar 64 -lw 1e-5 sphere.oct \
+    < sphere_wall.pts > /dev/null
+  echo "== rpict office_view 256"
+  RADCL_DEVICE=$dev "$b/bin/rpict" -u- -vf office.vf -x 16 -y 16 -ab 2 -ad 1024 -as 256 -aa 0.15 \
+    -ar 128 office_clear.oct > /dev/null
+  RADCL_DEVICE=$dev RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user" "$b/bin/rpict" -u- \
+    -vf office.vf -x 256 -y 256 -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128 office_clear.oct > /dev/null
+  cd "$root" || return
+}
+
 for what in "$@"; do
   echo "=== $what $(date +%T)"
   case $what in
@@ -47,6 +71,7 @@ for what in "$@"; do
   tests) RADCL_DEVICE=nvidia tests ;;
   bench) RADCL_DEVICE=nvidia "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
   bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;
+  profile) profile 2>&1 | tee "$out/profile.txt" ;;
   rounds) (cd "$root/tests/data/scenes" && RADCL_DEVICE=nvidia RADCL_DEBUG_CACHE=1 "$b/bin/rtrace" \
       -n "$(nproc)" -u- -h -I -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 office_clear.oct \
       < office_grid.pts 2>&1 >/dev/null | awk '/round/ { n = $6

@@ -80,9 +80,23 @@ void Buffer::write(const void* src, std::size_t bytes, std::size_t offset) {
     std::memcpy(static_cast<char*>(p) + offset, src, bytes);
     unmap(p);
   } else {
-    RADCL_CL(clEnqueueWriteBuffer(ctx_->queue(), mem_, CL_TRUE, offset, bytes, src, 0, nullptr,
+    // Without waiting: the queue is in order, so later commands see the data, and the copy
+    // the transfer reads from lives until the queue next drains.
+    const void* staged = ctx_->stage(src, bytes);
+    RADCL_CL(clEnqueueWriteBuffer(ctx_->queue(), mem_, CL_FALSE, offset, bytes, staged, 0, nullptr,
                                   nullptr));
   }
+}
+
+const void* Buffer::peek(std::size_t bytes, std::vector<char>& staging) const {
+  if (bytes > bytes_) throw FatalError("device buffer read out of range");
+  if (host_ && ctx_->direct_host()) {
+    ctx_->sync();
+    return host_;
+  }
+  if (staging.size() < bytes) staging.resize(bytes);
+  if (bytes) read(staging.data(), bytes);
+  return staging.data();
 }
 
 void Buffer::read(void* dst, std::size_t bytes, std::size_t offset) const {
@@ -95,6 +109,7 @@ void Buffer::read(void* dst, std::size_t bytes, std::size_t offset) const {
   } else {
     RADCL_CL(
         clEnqueueReadBuffer(ctx_->queue(), mem_, CL_TRUE, offset, bytes, dst, 0, nullptr, nullptr));
+    ctx_->drained(); // a blocking read in an in-order queue waited for everything before it
   }
 }
 

@@ -10,7 +10,9 @@
 namespace radcl::device {
 
 Context::Context(const DeviceInfo& device) : info_(device) {
-  direct_host_ = device.host_unified_memory && device.kind == DeviceKind::CPU &&
+  const char* mem = std::getenv("RADCL_DEVICE_MEMORY");
+  separate_ = mem && std::string(mem) == "separate";
+  direct_host_ = zero_copy() && device.kind == DeviceKind::CPU &&
                  device.platform_name.find("Portable Computing Language") != std::string::npos &&
                  !std::getenv("RADCL_MAP_BUFFERS"); // "1": map/unmap as on other devices
   cl_device_id id = static_cast<cl_device_id>(device.id);
@@ -47,6 +49,25 @@ void Context::run(Kernel& kernel, std::size_t items, std::size_t group) {
 void Context::finish() {
   RADCL_CL(clFinish(queue_));
   pending_ = false;
+  drained();
+}
+
+const void* Context::stage(const void* src, std::size_t bytes) {
+  std::vector<char> b;
+  if (!spare_.empty()) {
+    b = std::move(spare_.back());
+    spare_.pop_back();
+  }
+  b.assign(static_cast<const char*>(src), static_cast<const char*>(src) + bytes);
+  staged_.push_back(std::move(b));
+  return staged_.back().data();
+}
+
+void Context::drained() {
+  // Keep a few blocks (their memory is already mapped) for the next transfers.
+  for (auto& b : staged_)
+    if (spare_.size() < 16) spare_.push_back(std::move(b));
+  staged_.clear();
 }
 
 void Context::sync() {

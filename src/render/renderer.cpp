@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -19,6 +20,7 @@
 #include "radcl/render/ambient_leaks.h"
 #include "radcl/render/ambient_record.h"
 #include "radcl/render/id_slots.h"
+#include "radcl/render/phase_profile.h"
 #include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
 #include "radcl/rng.h"
@@ -80,6 +82,21 @@ std::array<double, 2> square_to_disk(double sx, double sy) {
 }
 
 // Whether lookups in an irradiance cache run: records to look up, -aa > 0 and a bounce.
+// Runs f(i) for every i in [0, n): in parallel where there are enough to pay for it (the
+// per-ray host loops of a wave of millions of hemisphere samples).
+template <class F> void for_rows(std::size_t n, const F& f) {
+  constexpr std::size_t kGrain = 4096;
+  if (n < 2 * kGrain) {
+    for (std::size_t i = 0; i < n; ++i)
+      f(i);
+    return;
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
+      f(i);
+  });
+}
+
 bool uses_cache(const RenderSettings& st) {
   return st.ab > 0 && st.aa > 0 && (st.make_records || !st.ambient_records.empty());
 }
@@ -106,6 +123,8 @@ struct Renderer::Impl {
   static constexpr unsigned kSceneArgs = 11;
   Vec3d centre;
   RenderStats stats;
+  PhaseProfile prof;
+  using Timed = PhaseProfile::Scope;
   // -as: hemisphere samples tally per division until the super-samples are decided.
   bool tree = false;
   TallyTree tally;
@@ -138,6 +157,7 @@ struct Renderer::Impl {
   std::uint32_t cap_shadow = 16, cap_spawn = 2;
   static constexpr std::size_t kUncountedWave = 2048;
   std::vector<device::Buffer> pool = std::vector<device::Buffer>(kSlots);
+  std::vector<char> peek_sh, peek_sp; // host copies of the slots where the device is not the host
   device::Buffer& scratch(Slot slot, std::size_t bytes) {
     bytes = std::max<std::size_t>(bytes, 16);
     if (pool[slot].size() < bytes) pool[slot] = device::Buffer(ctx, bytes + bytes / 2);
@@ -149,6 +169,9 @@ struct Renderer::Impl {
     return b;
   }
 
+  ~Impl() {
+    if (prof.on()) prof.print(stderr);
+  }
   Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
       : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
         program(c, shade_program(cs, st)), count(program.kernel("rc_count")),
@@ -252,6 +275,7 @@ struct Renderer::Impl {
   std::vector<std::uint32_t> marked_base_src; // cache_local index of each marked_base input
 
   void upload_cache() {
+    Timed timed(prof, Phase::Upload);
     const char* lt = std::getenv("RADCL_LEAK_TEST"); // "0": no leak test (to measure it)
     const bool leak_test = !(lt && std::string(lt) == "0");
     const std::size_t n = uses_cache(settings) ? cache_local.size() : 0;
@@ -414,33 +438,38 @@ struct Renderer::Impl {
     };
     std::unordered_map<std::array<std::int64_t, 4>, std::vector<const rc_ray*>, CellHash> grid;
     std::vector<const rc_ray*> chosen;
+    std::optional<Timed> timed(std::in_place, prof, Phase::Choose);
     auto cell = [&](const rc_ray& m, int dx, int dy, int dz) {
       return std::array<std::int64_t, 4>{static_cast<std::int64_t>(m.ambient_depth),
                                          static_cast<std::int64_t>(std::floor(m.org.x / sep)) + dx,
                                          static_cast<std::int64_t>(std::floor(m.org.y / sep)) + dy,
                                          static_cast<std::int64_t>(std::floor(m.org.z / sep)) + dz};
     };
+    // The miss's own cell first: where misses are dense, that is where a chosen one lies.
+    std::array<std::array<int, 3>, 27> around;
+    around[0] = {0, 0, 0};
+    for (int k = 1, c = 0; c < 27; ++c)
+      if (c != 13) around[k++] = {c / 9 - 1, c / 3 % 3 - 1, c % 3 - 1};
     for (const rc_ray& m : miss) {
       bool near = false;
-      for (int dx = -1; dx <= 1 && !near; ++dx)
-        for (int dy = -1; dy <= 1 && !near; ++dy)
-          for (int dz = -1; dz <= 1 && !near; ++dz) {
-            auto it = grid.find(cell(m, dx, dy, dz));
-            if (it == grid.end()) continue;
-            for (const rc_ray* c : it->second) {
-              const double ex = m.org.x - c->org.x, ey = m.org.y - c->org.y,
-                           ez = m.org.z - c->org.z;
-              const double facing = m.dir.x * c->dir.x + m.dir.y * c->dir.y + m.dir.z * c->dir.z;
-              if (facing > 0.5 && ex * ex + ey * ey + ez * ez < sep * sep) {
-                near = true;
-                break;
-              }
-            }
+      for (const auto& [dx, dy, dz] : around) {
+        auto it = grid.find(cell(m, dx, dy, dz));
+        if (it == grid.end()) continue;
+        for (const rc_ray* c : it->second) {
+          const double ex = m.org.x - c->org.x, ey = m.org.y - c->org.y, ez = m.org.z - c->org.z;
+          const double facing = m.dir.x * c->dir.x + m.dir.y * c->dir.y + m.dir.z * c->dir.z;
+          if (facing > 0.5 && ex * ex + ey * ey + ez * ez < sep * sep) {
+            near = true;
+            break;
           }
+        }
+        if (near) break;
+      }
       if (near) continue;
       grid[cell(m, 0, 0, 0)].push_back(&m);
       chosen.push_back(&m);
     }
+    timed.reset();
     sample_hemispheres(chosen);
   }
 
@@ -557,8 +586,19 @@ struct Renderer::Impl {
     std::vector<rc_amb_hemi> hemis;
     std::vector<PrimaryRay> rays;
     std::vector<RayStart> start;
+    std::optional<Timed> timed(std::in_place, prof, Phase::Sample);
     const HemisphereSettings hs{settings.ambient_min_radius, settings.ambient_max_radius,
                                 settings.aa};
+    // Which misses are sampled, each hemisphere's frame, first sample and ids, in order;
+    // then the samples themselves, hemispheres in parallel (their ids fixed by that order).
+    struct Frame {
+      const rc_ray* m;
+      Vec3d n, ux, uy;
+      std::uint32_t rec; // the record's random key; its samples' ids follow it
+      float sw;
+    };
+    std::vector<Frame> frames;
+    std::size_t total = 0;
     for (const rc_ray* m : chosen) {
       const double wt = ambient_record_weight(static_cast<int>(m->ambient_depth), m->coef.w);
       const float sw = static_cast<float>(kAvgRefl * m->coef.w);
@@ -577,14 +617,34 @@ struct Renderer::Impl {
       const Vec3d uy = {n[1] * ux[2] - n[2] * ux[1], n[2] * ux[0] - n[0] * ux[2],
                         n[0] * ux[1] - n[1] * ux[0]};
       hemis.push_back(make_hemisphere({m->org.x, m->org.y, m->org.z}, n, ux,
-                                      static_cast<unsigned>(ns), static_cast<unsigned>(rays.size()),
+                                      static_cast<unsigned>(ns), static_cast<unsigned>(total),
                                       static_cast<int>(m->ambient_depth), wt, hs));
-      const std::uint32_t rec = next_sample_id++;
-      rc_rng_key key = rc_make_key(rec, 0x616d62u, 0, settings.seed);
+      frames.push_back({m, n, ux, uy, next_sample_id, sw});
+      const std::size_t n2 = static_cast<std::size_t>(ns) * static_cast<std::size_t>(ns);
+      next_sample_id += static_cast<std::uint32_t>(1 + n2);
+      total += n2;
+    }
+    rays.resize(total);
+    start.resize(total);
+    tbb::parallel_for(std::size_t{0}, frames.size(), [&](std::size_t f) {
+      const Frame& fr = frames[f];
+      const rc_ray* m = fr.m;
+      const int ns = static_cast<int>(hemis[f].ns);
+      rc_rng_key key = rc_make_key(fr.rec, 0x616d62u, 0, settings.seed);
       // The samples leave from beside the surface (as the kernels' rays: rc_leave).
       const double lv = leave_dist(m->org.x, m->org.y, m->org.z);
+      const Vec3d& n = fr.n;
       const Vec3d o = {m->org.x + centre[0] + lv * n[0], m->org.y + centre[1] + lv * n[1],
                        m->org.z + centre[2] + lv * n[2]};
+      RayStart s;
+      s.flags = RC_RAY_AMBIENT | RC_RAY_ROOT |
+                (m->flags & ~(RC_RAY_KIND_MASK | RC_RAY_MIRRORED | RC_RAY_THROUGH | RC_RAY_TILTED));
+      s.depth = m->depth + 1;
+      s.ambient_depth = m->ambient_depth + 1;
+      s.weight = fr.sw;
+      s.dist0 = m->dist0; // Radiance's samples are children of the ray that needs the value
+      std::size_t at = hemis[f].first;
+      std::uint32_t id = fr.rec + 1;
       for (int i = 0; i < ns; ++i)
         for (int j = 0; j < ns; ++j) {
           const std::uint32_t dim = 2u * static_cast<std::uint32_t>(i * ns + j);
@@ -593,28 +653,25 @@ struct Renderer::Impl {
           const double z = std::sqrt(std::max(0.0, 1 - d[0] * d[0] - d[1] * d[1]));
           Vec3d dir;
           for (int k = 0; k < 3; ++k)
-            dir[k] = d[0] * ux[k] + d[1] * uy[k] + z * n[k];
-          rays.push_back({o, unit(dir), 0, next_sample_id++});
-          RayStart s;
-          s.flags =
-              RC_RAY_AMBIENT | RC_RAY_ROOT |
-              (m->flags & ~(RC_RAY_KIND_MASK | RC_RAY_MIRRORED | RC_RAY_THROUGH | RC_RAY_TILTED));
-          s.depth = m->depth + 1;
-          s.ambient_depth = m->ambient_depth + 1;
-          s.weight = sw;
-          s.dist0 = m->dist0; // Radiance's samples are children of the ray that needs the value
-          start.push_back(s);
+            dir[k] = d[0] * fr.ux[k] + d[1] * fr.uy[k] + z * n[k];
+          rays[at] = {o, unit(dir), 0, id++};
+          start[at] = s;
+          ++at;
         }
-    }
+    });
     if (hemis.empty()) return;
     std::vector<PrimaryResult> res(rays.size());
+    timed.reset();
     ++nesting;
     build_render(rays, res, start);
     --nesting;
+    timed.emplace(prof, Phase::Sample);
     std::vector<double> nearest(res.size());
     for (std::size_t i = 0; i < res.size(); ++i)
       nearest[i] = sample_length(res[i]);
+    timed.reset();
     supersample_hemispheres(hemis, rays, start, res, nearest);
+    timed.emplace(prof, Phase::Sample);
     // The strata as the record kernel reads them: value over ns^2, reciprocal distance (0:
     // nothing hit, < 0: a failed sample) and the point met, clamped as Radiance clamps it.
     const double far = 10 * settings.cube_size + 1000;
@@ -634,7 +691,11 @@ struct Renderer::Impl {
                             h.pos.z + reach * rays[i].dir[2], 0);
       }
     if (!maker) maker = std::make_unique<RecordMaker>(ctx);
-    MadeRecords out = maker->make(hemis, samples);
+    timed.reset();
+    MadeRecords out = [&] {
+      Timed t(prof, Phase::Records);
+      return maker->make(hemis, samples);
+    }();
     std::size_t added = 0;
     for (std::size_t k = 0; k < out.records.size(); ++k) {
       if (out.made[k].status != RC_AMB_RECORD) continue;
@@ -792,7 +853,7 @@ struct Renderer::Impl {
     results = res;
     root_depth.assign(prim.size(), 0);
     if (tree) tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
-    for (std::size_t i = 0; i < prim.size(); ++i) {
+    for_rows(prim.size(), [&](std::size_t i) {
       Vec3d d = unit(prim[i].dir);
       Vec3d o = prim[i].org;
       res[i] = PrimaryResult{};
@@ -815,7 +876,7 @@ struct Renderer::Impl {
         r.org.w = RC_TMIN_OFF; // its origin is already beside the surface
       }
       root_depth[i] = r.depth;
-    }
+    });
     if (settings.irradiance_I && nesting == 0) {
       // The measurement point is a diffuse meter facing the given direction, meter_offset()
       // along it (where Radiance's reversed primary ray meets it).
@@ -1067,6 +1128,7 @@ struct Renderer::Impl {
   void shade_slice(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits, std::size_t a,
                    std::size_t b, std::vector<Vec3d>& sums, std::vector<rc_ray>& next) {
     std::size_t n = b - a;
+    std::optional<Timed> timed(std::in_place, prof, Phase::Shade);
     std::uint32_t un = static_cast<std::uint32_t>(n);
     const rc_ray* rays = queue.data() + a;
     const rc_hit* hit = hits.data() + a;
@@ -1097,19 +1159,19 @@ struct Renderer::Impl {
     std::vector<rc_shadow> shadows(nshadow);
     std::vector<rc_ray> children(nspawn);
     {
-      const auto* ssh = static_cast<const rc_shadow*>(bslot_sh.map());
-      const auto* ssp = static_cast<const rc_ray*>(bslot_sp.map());
-      std::size_t k = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (k < over.size() && over[k] == i) {
-          ++k;
-          continue;
-        }
+      // Only this slice's slots, read once (not the pool buffers whole, both ways).
+      const auto* ssh =
+          static_cast<const rc_shadow*>(bslot_sh.peek(n * csh * sizeof(rc_shadow), peek_sh));
+      const auto* ssp =
+          static_cast<const rc_ray*>(bslot_sp.peek(n * csp * sizeof(rc_ray), peek_sp));
+      std::vector<char> later(n, 0); // shaded again below
+      for (std::uint32_t i : over)
+        later[i] = 1;
+      for_rows(n, [&](std::size_t i) {
+        if (later[i]) return;
         std::copy_n(ssh + i * csh, nsh[i], shadows.data() + shadow_off[i]);
         std::copy_n(ssp + i * csp, nsp[i], children.data() + spawn_off[i]);
-      }
-      bslot_sh.unmap(const_cast<rc_shadow*>(ssh));
-      bslot_sp.unmap(const_cast<rc_ray*>(ssp));
+      });
     }
     if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
     device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
@@ -1117,7 +1179,9 @@ struct Renderer::Impl {
 
     std::vector<rc_shadow> requested;
     if (settings.trace == RenderSettings::Trace::RaysAndShadows) requested = shadows;
+    timed.reset();
     std::vector<std::uint8_t> blocked = trace_shadows(shadows);
+    timed.emplace(prof, Phase::Accumulate);
     if (nshadow > 0) bshadows.write(shadows.data(), nshadow * sizeof(rc_shadow));
     device::Buffer& bblocked = scratch(kBlocked, blocked);
     device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
@@ -1168,6 +1232,7 @@ struct Renderer::Impl {
   // accept there are tested by a short ray; the blocked ones are listed for the kernel.
   void test_leaks(const std::vector<rc_ray>& queue, std::vector<rc_hit>& hits) {
     if (!leak_tester.active()) return;
+    Timed timed(prof, Phase::Leaks);
     const std::size_t n = queue.size();
     const double eps = ray_eps;
     auto segment_blocked = [&](const std::array<double, 3>& o, const std::array<double, 3>& d,
@@ -1246,21 +1311,21 @@ struct Renderer::Impl {
 
   void trace(const std::vector<rc_ray>& queue, std::vector<rc_hit>& hits,
              std::span<PrimaryResult> res, bool primaries) {
+    Timed timed(prof, Phase::Trace);
     std::size_t n = queue.size();
     std::vector<geometry::Ray> rays(n);
-    for (std::size_t i = 0; i < n; ++i) {
+    for_rows(n, [&](std::size_t i) {
       const rc_ray& r = queue[i];
       rays[i].org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
       rays[i].dir = {r.dir.x, r.dir.y, r.dir.z};
       rays[i].tmin = r.org.w;
       rays[i].tmax = std::isfinite(r.dir.w) ? r.dir.w : 1e300;
-    }
+    });
     std::vector<std::optional<geometry::Hit>> gh(n);
     geom.intersect(rays, gh);
     (primaries ? stats.primary : stats.secondary) += n;
     hits.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      hits[i] = to_device(rays[i], gh[i]);
+    for_rows(n, [&](std::size_t i) { hits[i] = to_device(rays[i], gh[i]); });
     // The first hit's mirror reflection: how far it went, for rtrace's R and l. Measured from
     // the surface point it left (its ray starts just beside it: rc_leave).
     auto dist = [](const Vec3d& a, const Vec3d& b) {
@@ -1333,7 +1398,7 @@ struct Renderer::Impl {
     for (int step = 0; step < kMaxSteps && !cur.empty(); ++step) {
       std::size_t m = cur.size();
       std::vector<geometry::Ray> rays(m);
-      for (std::size_t i = 0; i < m; ++i) {
+      for_rows(m, [&](std::size_t i) {
         const rc_shadow& s = cur[i];
         const rc_source& src = cs.sources.sources[s.source];
         rays[i].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
@@ -1341,13 +1406,14 @@ struct Renderer::Impl {
         rays[i].tmin = s.org.w;
         rays[i].tmax =
             src.kind == RC_SRC_DISTANT || !std::isfinite(s.dir.w) ? 1e300 : s.dir.w * 1.001 + 1e-3;
-      }
+      });
+      std::optional<Timed> timed(std::in_place, prof, Phase::ShadowTrace);
       std::vector<std::optional<geometry::Hit>> gh(m);
       geom.intersect(rays, gh);
       stats.shadow += m;
       std::vector<rc_hit> hits(m);
-      for (std::size_t i = 0; i < m; ++i)
-        hits[i] = to_device(rays[i], gh[i]);
+      for_rows(m, [&](std::size_t i) { hits[i] = to_device(rays[i], gh[i]); });
+      timed.emplace(prof, Phase::ShadowStep);
 
       device::Buffer& bcur = scratch(kStepRays, cur);
       device::Buffer& bhits = scratch(kStepHits, hits);

@@ -33,14 +33,14 @@ errs() {
 run() { # output-file args... ; prints seconds
   local out=$1; shift
   ( cd "$scenes" && /usr/bin/time -f "%e" "$build/bin/rtrace" -n "$threads" -u- -h -I "$@" \
-      > "$out" 2> "$work/err" ) || { cat "$work/err"; exit 1; }
+      > "$out" 2> "$work/err" ) || { cat "$work/err" >&2; exit 1; }
   tail -n 1 "$work/err"
 }
 
 radiance() { # output program args... ; Radiance's program from RADIANCE_BIN; prints seconds
   local out=$1 prog=$2; shift 2
   ( cd "$scenes" && /usr/bin/time -f "%e" "$RADIANCE_BIN/$prog" "$@" > "$out" 2> "$work/rerr" ) ||
-    { cat "$work/rerr"; exit 1; }
+    { cat "$work/rerr" >&2; exit 1; }
   tail -n 1 "$work/rerr"
 }
 
@@ -96,7 +96,7 @@ pict() { # resolution extra-args... ; prints seconds
   local res=$1; shift
   ( cd "$scenes" && /usr/bin/time -f "%e" "$build/bin/rpict" -u- -vf office.vf \
       -x "$res" -y "$res" -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128 "$@" office_clear.oct \
-      > "$work/pict.hdr" 2> "$work/err" ) || { cat "$work/err"; exit 1; }
+      > "$work/pict.hdr" 2> "$work/err" ) || { cat "$work/err" >&2; exit 1; }
   tail -n 1 "$work/err"
 }
 echo

@@ -120,3 +120,13 @@ TEST(StabilityDeterminism, RtraceSplitInputAmbient) {
 TEST(StabilityDeterminism, RtraceSplitInputBuildingCache) {
   expect_split_input_same("-ab 2 -aa 0.15 -ad 128 -as 32", "sphere.oct", "sphere_wall.pts", 8);
 }
+
+// The discrete GPU's buffer path (device memory, staged writes, slots read back in part),
+// forced on this device by RADCL_DEVICE_MEMORY=separate, gives the same bits as host memory,
+// while the cache is built.
+TEST(StabilityDeterminism, RtraceSeparateDeviceMemory) {
+  std::string cmd = "rtrace -h -I -u- -fad -ab 2 -aa 0.15 -ad 128 -as 32 -ar 32 -n 2 "
+                    "office_clear.oct < office_grid.pts";
+  std::string base = output(cmd);
+  EXPECT_TRUE(output("RADCL_DEVICE_MEMORY=separate " + cmd) == base);
+}

@@ -1,5 +1,6 @@
 // Buffers round-trip data; on a host-memory device (PoCL) they are zero-copy: the mapped
 // pointer is the buffer's own host allocation.
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <numeric>
 #include <vector>
@@ -71,4 +72,47 @@ TEST(Buffer, CopiesAroundLaunchesStayInOrder) {
     EXPECT_EQ(seen[seed - 1], ref.to_vector<std::uint32_t>(n)) << "seed " << seed;
   }
   EXPECT_NE(seen[0], seen[1]);
+}
+
+// The discrete GPU's path on any device (RADCL_DEVICE_MEMORY=separate): buffers in device
+// memory, writes enqueued without waiting from a staged copy of the source (so the source may
+// change or vanish at once), peek reading just the bytes asked for.
+TEST(Buffer, SeparateMemoryStagesWritesAndPeeks) {
+  setenv("RADCL_DEVICE_MEMORY", "separate", 1);
+  Context ctx(select_device());
+  unsetenv("RADCL_DEVICE_MEMORY");
+  EXPECT_FALSE(ctx.zero_copy());
+  EXPECT_FALSE(ctx.direct_host());
+  Program prog(ctx, ProgramSource{{"probe/rng.cl"}, "", "-cl-std=CL1.2"});
+  Kernel k = prog.kernel("rc_rng_fill");
+  const std::uint32_t n = 4096;
+  Buffer a(ctx, n * 4), b(ctx, n * 4);
+  EXPECT_FALSE(a.zero_copy());
+  {
+    std::vector<std::uint32_t> src(n);
+    std::iota(src.begin(), src.end(), 0u);
+    a.write(src.data(), n * 4);
+    std::fill(src.begin(), src.end(), 7u); // after the enqueue: must not reach the buffer
+    b.write(src.data(), n * 4);
+  } // the sources are gone before any transfer is waited for
+  std::vector<char> staging;
+  const auto* pa = static_cast<const std::uint32_t*>(a.peek(16 * 4, staging));
+  EXPECT_GE(staging.size(), 16u * 4);
+  for (std::uint32_t i = 0; i < 16; ++i)
+    ASSERT_EQ(pa[i], i);
+  std::vector<std::uint32_t> vb = b.to_vector<std::uint32_t>(n);
+  for (std::uint32_t v : vb)
+    ASSERT_EQ(v, 7u);
+  // A kernel between a write and a read: the in-order queue keeps them in order.
+  Buffer out(ctx, n * 4), u(ctx, n * 4);
+  std::vector<std::uint32_t> zeros(n, 0);
+  out.write(zeros.data(), n * 4);
+  k.arg(0, out).arg(1, u).arg(2, n).arg(3, 1u).arg(4, 5u);
+  ctx.run(k, n);
+  std::vector<std::uint32_t> got = out.to_vector<std::uint32_t>(n);
+  std::size_t nonzero = 0;
+  for (std::uint32_t v : got)
+    nonzero += v != 0;
+  EXPECT_GT(nonzero, n / 2);
+  EXPECT_THROW(a.peek(n * 4 + 1, staging), radcl::FatalError);
 }

@@ -41,6 +41,11 @@ public:
     return v;
   }
 
+  // The first `bytes` of the buffer for reading on the host, after every command before: the
+  // buffer's own allocation where the host may read it directly (PoCL), else a copy read into
+  // `staging` (one transfer of just those bytes, where mapping would move the whole buffer
+  // both ways on a discrete GPU).
+  const void* peek(std::size_t bytes, std::vector<char>& staging) const;
   // Maps the whole buffer for host access (blocking); returns the host pointer. For a
   // zero-copy buffer this is the buffer's own host allocation.
   void* map();

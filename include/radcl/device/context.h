@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 #include "radcl/device/device_info.h"
 
@@ -21,7 +22,10 @@ public:
   Context& operator=(const Context&) = delete;
 
   const DeviceInfo& info() const { return info_; }
-  bool zero_copy() const { return info_.host_unified_memory; }
+  // Buffers wrap host memory on devices that share it, unless RADCL_DEVICE_MEMORY=separate
+  // asks for device buffers and transfers anyway: the path a discrete GPU takes, run on PoCL
+  // so that tests cover it.
+  bool zero_copy() const { return info_.host_unified_memory && !separate_; }
   // PoCL's CPU drivers run kernels on a zero-copy buffer's own host allocation, so once the
   // queue is idle the host may copy in and out of it directly. A map/unmap pair instead is two
   // commands through PoCL's worker threads, each waking them: on a small wave those wake-ups
@@ -35,6 +39,11 @@ public:
   // argument. group = 0 picks the kernel's preferred multiple.
   void run(Kernel& kernel, std::size_t items, std::size_t group = 0);
   void finish();
+  // A copy of `bytes` at `src` that stays valid until the queue drains (finish, or a blocking
+  // read): the source of a transfer enqueued without waiting.
+  const void* stage(const void* src, std::size_t bytes);
+  // Every command enqueued so far has completed: the staged copies may go.
+  void drained();
 
   _cl_context* handle() const { return context_; }
   _cl_command_queue* queue() const { return queue_; }
@@ -44,7 +53,10 @@ private:
   _cl_context* context_ = nullptr;
   _cl_command_queue* queue_ = nullptr;
   bool direct_host_ = false;
-  bool pending_ = false; // a kernel was enqueued since the last finish
+  bool separate_ = false; // RADCL_DEVICE_MEMORY=separate
+  bool pending_ = false;  // a kernel was enqueued since the last finish
+  // Copies behind transfers still in flight; blocks are kept for reuse once drained.
+  std::vector<std::vector<char>> staged_, spare_;
 };
 
 // The device chosen by RADCL_DEVICE (see select_device), shared by the whole process.
