@@ -667,8 +667,7 @@ struct Renderer::Impl {
     --nesting;
     timed.emplace(prof, Phase::Sample);
     std::vector<double> nearest(res.size());
-    for (std::size_t i = 0; i < res.size(); ++i)
-      nearest[i] = sample_length(res[i]);
+    for_rows(res.size(), [&](std::size_t i) { nearest[i] = sample_length(res[i]); });
     timed.reset();
     supersample_hemispheres(hemis, rays, start, res, nearest);
     timed.emplace(prof, Phase::Sample);
@@ -676,7 +675,8 @@ struct Renderer::Impl {
     // nothing hit, < 0: a failed sample) and the point met, clamped as Radiance clamps it.
     const double far = 10 * settings.cube_size + 1000;
     std::vector<rc_amb_sample> samples(rays.size());
-    for (const rc_amb_hemi& h : hemis)
+    tbb::parallel_for(std::size_t{0}, hemis.size(), [&](std::size_t hi) {
+      const rc_amb_hemi& h = hemis[hi];
       for (std::uint32_t k = 0; k < h.ns * h.ns; ++k) {
         const std::size_t i = h.first + k;
         const PrimaryResult& r = res[i];
@@ -690,6 +690,7 @@ struct Renderer::Impl {
         samples[i].pnt = f4(h.pos.x + reach * rays[i].dir[0], h.pos.y + reach * rays[i].dir[1],
                             h.pos.z + reach * rays[i].dir[2], 0);
       }
+    });
     if (!maker) maker = std::make_unique<RecordMaker>(ctx);
     timed.reset();
     MadeRecords out = [&] {
@@ -929,10 +930,17 @@ struct Renderer::Impl {
       }
       queue = std::move(next);
     }
-    for (std::size_t i = 0; i < prim.size(); ++i) {
+    const auto finish = [&](std::size_t i) {
       res[i].value = tree ? tally.sum(i) : sums[i];
       res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
-      if (settings.trace != RenderSettings::Trace::Off) res[i].traced = traced(i);
+    };
+    if (settings.trace != RenderSettings::Trace::Off) {
+      for (std::size_t i = 0; i < prim.size(); ++i) {
+        finish(i);
+        res[i].traced = traced(i);
+      }
+    } else {
+      for_rows(prim.size(), finish);
     }
   }
 
