@@ -81,7 +81,6 @@ std::array<double, 2> square_to_disk(double sx, double sy) {
   return {r * std::cos(phi), r * std::sin(phi)};
 }
 
-// Whether lookups in an irradiance cache run: records to look up, -aa > 0 and a bounce.
 // Runs f(i) for every i in [0, n): in parallel where there are enough to pay for it (the
 // per-ray host loops of a wave of millions of hemisphere samples).
 template <class F> void for_rows(std::size_t n, const F& f) {
@@ -97,6 +96,7 @@ template <class F> void for_rows(std::size_t n, const F& f) {
   });
 }
 
+// Whether lookups in an irradiance cache run: records to look up, -aa > 0 and a bounce.
 bool uses_cache(const RenderSettings& st) {
   return st.ab > 0 && st.aa > 0 && (st.make_records || !st.ambient_records.empty());
 }
