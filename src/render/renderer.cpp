@@ -361,6 +361,7 @@ struct Renderer::Impl {
     const bool have_ids =
         std::none_of(rays.begin(), rays.end(), [](const PrimaryRay& r) { return r.id == RC_NONE; });
     for (int round = 0; !todo.empty(); ++round) {
+      std::optional<Timed> timed(std::in_place, prof, Phase::Bookkeeping);
       const bool last = round >= kRounds;
       // The first pass renders every ray in place; later ones the copies of those that missed.
       const bool whole = round == 0 && have_ids;
@@ -389,10 +390,12 @@ struct Renderer::Impl {
       starts = whole ? st : std::span<const RayStart>(sub_start);
       set_collect(!last);
       misses.clear();
+      timed.reset();
       const auto t0 = std::chrono::steady_clock::now();
       run(sub, res);
       const double dt =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      timed.emplace(prof, Phase::Bookkeeping);
       set_collect(false);
       starts = saved_starts;
       tree = saved_tree;
@@ -411,6 +414,7 @@ struct Renderer::Impl {
         std::fprintf(stderr,
                      "cache: nesting %d round %d: %zu primaries, %zu missed, %zu misses %.6f\n",
                      nesting, round, sub.size(), again.size(), miss.size(), dt);
+      timed.reset();
       if (!miss.empty()) make_records(miss, round);
       todo = std::move(again);
     }
@@ -1013,6 +1017,7 @@ struct Renderer::Impl {
   // The second pass of -as: the hemispheres' rays are shaded again and write only the
   // super-samples the tally tree asked for.
   void supersample(const std::vector<TallyTree::SuperRequest>& req, std::vector<rc_ray>& next) {
+    Timed timed(prof, Phase::Super);
     std::size_t n = req.size();
     std::vector<rc_ray> rays(n);
     std::vector<rc_hit> hit(n);

@@ -23,6 +23,8 @@ enum class Phase {
   Sample,      // a record's hemisphere rays, host side (nested renders excluded)
   Records,     // the record kernel
   Upload,      // the cache's trees rebuilt and uploaded
+  Super,       // the -as pass's second shading of a wave's rays (the tally tree's requests)
+  Bookkeeping, // a cache-build round's own work: copies of the rays that missed, their slots
   kCount
 };
 
@@ -35,8 +37,9 @@ public:
     ++calls_[static_cast<int>(p)];
   }
   void print(std::FILE* f) const {
-    static const char* names[] = {"trace", "leaks",  "shade",  "shadow-trace", "shadow-step",
-                                  "accum", "choose", "sample", "records",      "upload"};
+    static const char* names[] = {"trace",       "leaks",  "shade",  "shadow-trace",
+                                  "shadow-step", "accum",  "choose", "sample",
+                                  "records",     "upload", "super",  "bookkeeping"};
     for (int i = 0; i < static_cast<int>(Phase::kCount); ++i)
       if (calls_[i])
         std::fprintf(f, "profile: %-12s %9.3f s %8llu calls\n", names[i], sec_[i],
