@@ -44,23 +44,22 @@ tests() { # the stability suite, then the rest, each executable under a time lim
 
 profile() { # each case's wall time and the renderer's phases
   local opts="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3" dev=${PROFILE_DEVICE:-nvidia}
+  timed() { RADCL_DEVICE=$dev RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user" "$@" > /dev/null; }
   cd "$root/tests/data/scenes" || return
   head -n 1 office_grid.pts | RADCL_DEVICE=$dev "$b/bin/rtrace" -h -I $opts office_clear.oct > /dev/null
   for c in office_clear:office_grid office_overcast:office_grid luminaires:luminaires_grid; do
     echo "== ${c%%:*}"
     head -n 1 "${c#*:}.pts" | RADCL_DEVICE=$dev "$b/bin/rtrace" -h -I $opts "${c%%:*}.oct" > /dev/null
-    RADCL_DEVICE=$dev RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user" "$b/bin/rtrace" \
-      -n "$(nproc)" -u- -h -I $opts "${c%%:*}.oct" < "${c#*:}.pts" > /dev/null
+    timed "$b/bin/rtrace" -n "$(nproc)" -u- -h -I $opts "${c%%:*}.oct" < "${c#*:}.pts"
   done
   echo "== sphere -ab 4"
-  RADCL_DEVICE=$dev RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user" "$b/bin/rtrace" \
-    -n "$(nproc)" -u- -h -I -ab 4 -ad 1024 -as 256 -aa 0.1 -ar 64 -lw 1e-5 sphere.oct \
-    < sphere_wall.pts > /dev/null
+  timed "$b/bin/rtrace" -n "$(nproc)" -u- -h -I -ab 4 -ad 1024 -as 256 -aa 0.1 -ar 64 -lw 1e-5 \
+    sphere.oct < sphere_wall.pts
   echo "== rpict office_view 256"
   RADCL_DEVICE=$dev "$b/bin/rpict" -u- -vf office.vf -x 16 -y 16 -ab 2 -ad 1024 -as 256 -aa 0.15 \
     -ar 128 office_clear.oct > /dev/null
-  RADCL_DEVICE=$dev RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user" "$b/bin/rpict" -u- \
-    -vf office.vf -x 256 -y 256 -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128 office_clear.oct > /dev/null
+  timed "$b/bin/rpict" -u- -vf office.vf -x 256 -y 256 -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128 \
+    office_clear.oct
   cd "$root" || return
 }
 

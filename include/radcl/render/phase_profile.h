@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 
 namespace radcl::render {
 
@@ -40,6 +41,7 @@ public:
     static const char* names[] = {"trace",       "leaks",  "shade",  "shadow-trace",
                                   "shadow-step", "accum",  "choose", "sample",
                                   "records",     "upload", "super",  "bookkeeping"};
+    static_assert(std::size(names) == static_cast<std::size_t>(Phase::kCount));
     for (int i = 0; i < static_cast<int>(Phase::kCount); ++i)
       if (calls_[i])
         std::fprintf(f, "profile: %-12s %9.3f s %8llu calls\n", names[i], sec_[i],
