@@ -408,6 +408,7 @@ int rpict_main(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  radcl::use_huge_pages(argv);
   radcl::keep_freed_memory();
   return radcl::run_main("rpict", rpict_main, argc, argv);
 }

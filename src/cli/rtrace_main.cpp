@@ -433,6 +433,7 @@ int rtrace_main(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  radcl::use_huge_pages(argv);
   radcl::keep_freed_memory();
   return radcl::run_main("rtrace", rtrace_main, argc, argv);
 }

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -21,6 +21,7 @@
 #include "radcl/render/ambient_record.h"
 #include "radcl/render/id_slots.h"
 #include "radcl/render/phase_profile.h"
+#include "radcl/render/spread_choice.h"
 #include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
 #include "radcl/rng.h"
@@ -273,9 +274,15 @@ struct Renderer::Impl {
   AmbientCacheBuffers cache_base, marked_base;
   std::size_t base_n = 0;
   std::vector<std::uint32_t> marked_base_src; // cache_local index of each marked_base input
+  // The lowest level of any record (INT_MAX: none), counted up to level_seen: a lookup at
+  // ambient depth d accepts records of level d or lower only.
+  int min_level = std::numeric_limits<int>::max();
+  std::size_t level_seen = 0;
 
   void upload_cache() {
     Timed timed(prof, Phase::Upload);
+    for (; level_seen < cache_local.size(); ++level_seen)
+      min_level = std::min<int>(min_level, cache_local[level_seen].lvl);
     const char* lt = std::getenv("RADCL_LEAK_TEST"); // "0": no leak test (to measure it)
     const bool leak_test = !(lt && std::string(lt) == "0");
     const std::size_t n = uses_cache(settings) ? cache_local.size() : 0;
@@ -353,6 +360,17 @@ struct Renderer::Impl {
   // one of its first pass without a miss, so it is computed as Radiance computes it once the
   // records it needs exist.
   static constexpr int kRounds = 12;
+  bool direct_off = false; // this pass's values are thrown away: no shadow rays, no sums
+
+  // Whether every ray of a cache-build pass looks records up and none can be accepted: rays at
+  // ambient depth d (starts', else 0) below -ab, and no record of level d or lower.
+  bool will_all_miss(std::span<const RayStart> st) const {
+    if (st.empty()) return settings.ab > 0 && min_level > 0;
+    return std::all_of(st.begin(), st.end(), [&](const RayStart& r) {
+      const int d = static_cast<int>(r.ambient_depth);
+      return d < settings.ab && d < min_level;
+    });
+  }
   void build_render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results,
                     std::span<const RayStart> st) {
     std::vector<std::uint32_t> todo(rays.size());
@@ -369,19 +387,21 @@ struct Renderer::Impl {
       std::vector<RayStart> sub_start;
       std::vector<PrimaryResult> sub_res;
       std::vector<std::uint32_t> ids;
-      if (!whole)
-        for (std::uint32_t i : todo) {
-          PrimaryRay r = rays[i];
+      if (!whole) {
+        sub_rays.resize(todo.size());
+        if (!st.empty()) sub_start.resize(todo.size());
+        for_rows(todo.size(), [&](std::size_t k) {
+          const std::uint32_t i = todo[k];
+          PrimaryRay& r = sub_rays[k] = rays[i];
           if (r.id == RC_NONE) r.id = i; // the same random numbers in every pass
-          sub_rays.push_back(r);
-          if (!st.empty()) sub_start.push_back(st[i]);
-        }
+          if (!st.empty()) sub_start[k] = st[i];
+        });
+      }
       const std::span<const PrimaryRay> sub = whole ? rays : std::span<const PrimaryRay>(sub_rays);
       if (!whole) sub_res.resize(sub.size());
       const std::span<PrimaryResult> res = whole ? results : std::span<PrimaryResult>(sub_res);
-      ids.reserve(sub.size());
-      for (const PrimaryRay& r : sub)
-        ids.push_back(r.id);
+      ids.resize(sub.size());
+      for_rows(sub.size(), [&](std::size_t k) { ids[k] = sub[k].id; });
       IdSlots at;
       at.assign(ids);
       const bool saved_tree = tree;
@@ -389,6 +409,9 @@ struct Renderer::Impl {
       if (!last) tree = false; // nothing is super-sampled while misses are only reported
       starts = whole ? st : std::span<const RayStart>(sub_start);
       set_collect(!last);
+      // A first pass whose every lookup must miss (no record is at or below its rays' ambient
+      // depth) is thrown away whole: its shadow rays are not traced, and every ray goes again.
+      direct_off = round == 0 && !last && will_all_miss(st);
       misses.clear();
       timed.reset();
       const auto t0 = std::chrono::steady_clock::now();
@@ -397,6 +420,7 @@ struct Renderer::Impl {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       timed.emplace(prof, Phase::Bookkeeping);
       set_collect(false);
+      const bool thrown = std::exchange(direct_off, false);
       starts = saved_starts;
       tree = saved_tree;
       std::vector<rc_ray> miss = std::move(misses);
@@ -406,10 +430,11 @@ struct Renderer::Impl {
         missed[at.at(m.primary)] = 1;
       std::vector<std::uint32_t> again;
       for (std::size_t k = 0; k < sub.size(); ++k)
-        if (missed[k])
-          again.push_back(todo[k]);
-        else if (!whole)
-          results[todo[k]] = std::move(res[k]);
+        if (missed[k] || thrown) again.push_back(todo[k]);
+      if (!whole && !thrown)
+        for_rows(sub.size(), [&](std::size_t k) {
+          if (!missed[k]) results[todo[k]] = std::move(res[k]);
+        });
       if (std::getenv("RADCL_DEBUG_CACHE"))
         std::fprintf(stderr,
                      "cache: nesting %d round %d: %zu primaries, %zu missed, %zu misses %.6f\n",
@@ -431,48 +456,10 @@ struct Renderer::Impl {
     const double floor_sep = aa * std::max(settings.ambient_min_radius, 1e-6 * settings.cube_size);
     const double sep =
         std::max(floor_sep, aa * settings.ambient_max_radius / std::ldexp(1.0, round));
-    // Chosen points by grid cell of side `sep`: a neighbour within sep is in one of 27 cells.
-    struct CellHash {
-      std::size_t operator()(const std::array<std::int64_t, 4>& c) const {
-        std::uint64_t h = 0x9E3779B97F4A7C15ull;
-        for (std::int64_t v : c)
-          h = (h ^ static_cast<std::uint64_t>(v)) * 0xBF58476D1CE4E5B9ull;
-        return static_cast<std::size_t>(h ^ (h >> 31));
-      }
-    };
-    std::unordered_map<std::array<std::int64_t, 4>, std::vector<const rc_ray*>, CellHash> grid;
-    std::vector<const rc_ray*> chosen;
     std::optional<Timed> timed(std::in_place, prof, Phase::Choose);
-    auto cell = [&](const rc_ray& m, int dx, int dy, int dz) {
-      return std::array<std::int64_t, 4>{static_cast<std::int64_t>(m.ambient_depth),
-                                         static_cast<std::int64_t>(std::floor(m.org.x / sep)) + dx,
-                                         static_cast<std::int64_t>(std::floor(m.org.y / sep)) + dy,
-                                         static_cast<std::int64_t>(std::floor(m.org.z / sep)) + dz};
-    };
-    // The miss's own cell first: where misses are dense, that is where a chosen one lies.
-    std::array<std::array<int, 3>, 27> around;
-    around[0] = {0, 0, 0};
-    for (int k = 1, c = 0; c < 27; ++c)
-      if (c != 13) around[k++] = {c / 9 - 1, c / 3 % 3 - 1, c % 3 - 1};
-    for (const rc_ray& m : miss) {
-      bool near = false;
-      for (const auto& [dx, dy, dz] : around) {
-        auto it = grid.find(cell(m, dx, dy, dz));
-        if (it == grid.end()) continue;
-        for (const rc_ray* c : it->second) {
-          const double ex = m.org.x - c->org.x, ey = m.org.y - c->org.y, ez = m.org.z - c->org.z;
-          const double facing = m.dir.x * c->dir.x + m.dir.y * c->dir.y + m.dir.z * c->dir.z;
-          if (facing > 0.5 && ex * ex + ey * ey + ez * ez < sep * sep) {
-            near = true;
-            break;
-          }
-        }
-        if (near) break;
-      }
-      if (near) continue;
-      grid[cell(m, 0, 0, 0)].push_back(&m);
-      chosen.push_back(&m);
-    }
+    std::vector<const rc_ray*> chosen;
+    for (std::uint32_t i : choose_spread(miss, sep))
+      chosen.push_back(&miss[i]);
     timed.reset();
     sample_hemispheres(chosen);
   }
@@ -491,6 +478,7 @@ struct Renderer::Impl {
                                const std::vector<RayStart>& start, std::vector<PrimaryResult>& res,
                                std::vector<double>& nearest) {
     if (settings.as <= 0) return;
+    std::optional<Timed> timed(std::in_place, prof, Phase::Sample);
     std::vector<PrimaryRay> extra;
     std::vector<RayStart> extra_start;
     std::vector<std::size_t> division; // the sample slot each extra one refines
@@ -561,9 +549,11 @@ struct Renderer::Impl {
     }
     if (extra.empty()) return;
     std::vector<PrimaryResult> more(extra.size());
+    timed.reset();
     ++nesting;
     build_render(extra, more, extra_start);
     --nesting;
+    timed.emplace(prof, Phase::Sample);
     // Each division's value: the mean of its samples; its distance: the nearest (its point
     // stays the first sample's).
     std::vector<int> count(res.size(), 1);
@@ -839,6 +829,7 @@ struct Renderer::Impl {
 
   void render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
                     std::size_t first_index) {
+    std::optional<Timed> timed(std::in_place, prof, Phase::Batch);
     batch_first = first_index;
     id_slot.clear();
     if (std::any_of(prim.begin(), prim.end(),
@@ -902,6 +893,7 @@ struct Renderer::Impl {
       }
     }
 
+    timed.reset();
     bool first_wave = true;
     while (!queue.empty()) {
       std::size_t n = queue.size();
@@ -925,6 +917,7 @@ struct Renderer::Impl {
       if (tree)
         for (auto req = tally.take_requests(); !req.empty(); req = tally.take_requests())
           supersample(req, next);
+      Timed moving(prof, Phase::Batch);
       if (collecting) { // record requests are not rays
         auto miss = std::stable_partition(next.begin(), next.end(), [](const rc_ray& r) {
           return (r.flags & RC_RAY_KIND_MASK) != RC_RAY_AMBMISS;
@@ -934,6 +927,7 @@ struct Renderer::Impl {
       }
       queue = std::move(next);
     }
+    timed.emplace(prof, Phase::Batch);
     const auto finish = [&](std::size_t i) {
       res[i].value = tree ? tally.sum(i) : sums[i];
       res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
@@ -1070,6 +1064,7 @@ struct Renderer::Impl {
   // each ray, more than re-shading its few rays that do not fit.
   void size_slots(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits) {
     if (queue.size() <= kUncountedWave) return;
+    Timed timed(prof, Phase::Slots);
     std::size_t n = queue.size(), stride = std::max<std::size_t>(1, n / 512);
     std::vector<rc_ray> r;
     std::vector<rc_hit> h;
@@ -1129,7 +1124,8 @@ struct Renderer::Impl {
     std::vector<rc_shadow> sh = bsh.to_vector<rc_shadow>(tsh);
     std::vector<rc_ray> sp = bsp.to_vector<rc_ray>(tsp);
     for (std::size_t k = 0; k < m; ++k) {
-      std::copy_n(sh.data() + soff[k], nsh[over[k]], shadows.data() + shadow_off[over[k]]);
+      if (!shadows.empty()) // empty: a thrown-away pass
+        std::copy_n(sh.data() + soff[k], nsh[over[k]], shadows.data() + shadow_off[over[k]]);
       std::copy_n(sp.data() + poff[k], nsp[over[k]], children.data() + spawn_off[over[k]]);
     }
   }
@@ -1169,12 +1165,15 @@ struct Renderer::Impl {
       }
     std::vector<std::uint32_t> nsh = shadow_off, nsp = spawn_off;
     std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
-    std::vector<rc_shadow> shadows(nshadow);
+    // A thrown-away pass wants only the children (they may miss too).
+    std::vector<rc_shadow> shadows(direct_off ? 0 : nshadow);
     std::vector<rc_ray> children(nspawn);
     {
       // Only this slice's slots, read once (not the pool buffers whole, both ways).
       const auto* ssh =
-          static_cast<const rc_shadow*>(bslot_sh.peek(n * csh * sizeof(rc_shadow), peek_sh));
+          direct_off
+              ? nullptr
+              : static_cast<const rc_shadow*>(bslot_sh.peek(n * csh * sizeof(rc_shadow), peek_sh));
       const auto* ssp =
           static_cast<const rc_ray*>(bslot_sp.peek(n * csp * sizeof(rc_ray), peek_sp));
       std::vector<char> later(n, 0); // shaded again below
@@ -1182,11 +1181,15 @@ struct Renderer::Impl {
         later[i] = 1;
       for_rows(n, [&](std::size_t i) {
         if (later[i]) return;
-        std::copy_n(ssh + i * csh, nsh[i], shadows.data() + shadow_off[i]);
+        if (ssh) std::copy_n(ssh + i * csh, nsh[i], shadows.data() + shadow_off[i]);
         std::copy_n(ssp + i * csp, nsp[i], children.data() + spawn_off[i]);
       });
     }
     if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
+    if (direct_off) {
+      next.insert(next.end(), children.begin(), children.end());
+      return;
+    }
     device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
     device::Buffer& bshadows = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
 

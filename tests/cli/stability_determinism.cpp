@@ -130,3 +130,17 @@ TEST(StabilityDeterminism, RtraceSeparateDeviceMemory) {
   std::string base = output(cmd);
   EXPECT_TRUE(output("RADCL_DEVICE_MEMORY=separate " + cmd) == base);
 }
+
+// rtrace and rpict run themselves again with glibc's huge-page tunable (util/allocator.h); the
+// rays they were piped are all still read, and the output is the same with it off, or with
+// other tunables the user set (kept alongside).
+TEST(StabilityDeterminism, HugePagesDoNotChangeOutput) {
+  std::string cmd = "rtrace -h -I -u- -fad -ab 2 -aa 0.15 -ad 128 -as 32 -ar 32 -n 2 "
+                    "office_clear.oct < office_grid.pts";
+  std::string base = output(cmd);
+  EXPECT_EQ(base.size(), 77u * 3u * sizeof(double)); // every sensor answered
+  EXPECT_TRUE(output("RADCL_HUGE_PAGES=0 " + cmd) == base);
+  EXPECT_TRUE(output("GLIBC_TUNABLES=glibc.malloc.tcache_count=0 " + cmd) == base);
+  std::string pict = "rpict -u- -vf office.vf -x 32 -y 32 -ab 1 -ad 64 -aa 0.2 office_clear.oct";
+  EXPECT_TRUE(pixels(pict) == pixels("RADCL_HUGE_PAGES=0 " + pict));
+}
