@@ -5,7 +5,8 @@
 #   devices   radcl devices --check
 #   tests     the device-facing test executables on the GPU (stability suite first; TESTS
 #             names some instead, TEST_LIMIT is each one's time limit in seconds)
-#   bench     tests/bench/ambient_cache.sh on the GPU (Radiance alongside when it was bundled)
+#   bench     tests/bench/ambient_cache.sh on the GPU (Radiance alongside when it was bundled),
+#             the median of BENCH_REPEAT (default 3) runs per sensor case and rpict
 #   bench-cpu the same on PoCL with every core (NO_RADIANCE=1: radcl alone)
 #   rounds    office_clear's cache build on the GPU, its rounds' time by size
 #   profile   the benchmark's rtrace cases and rpict 256^2 on the GPU with RADCL_PROFILE=1: wall
@@ -68,7 +69,7 @@ for what in "$@"; do
   case $what in
   devices) RADCL_DEVICE=nvidia "$b/bin/radcl" devices --check ;;
   tests) RADCL_DEVICE=nvidia tests ;;
-  bench) RADCL_DEVICE=nvidia "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
+  bench) RADCL_DEVICE=nvidia BENCH_REPEAT=${BENCH_REPEAT:-3} "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
   bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;
   profile) profile 2>&1 | tee "$out/profile.txt" ;;
   rounds) (cd "$root/tests/data/scenes" && RADCL_DEVICE=nvidia RADCL_DEBUG_CACHE=1 "$b/bin/rtrace" \

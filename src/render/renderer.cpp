@@ -917,14 +917,6 @@ struct Renderer::Impl {
       if (tree)
         for (auto req = tally.take_requests(); !req.empty(); req = tally.take_requests())
           supersample(req, next);
-      Timed moving(prof, Phase::Batch);
-      if (collecting) { // record requests are not rays
-        auto miss = std::stable_partition(next.begin(), next.end(), [](const rc_ray& r) {
-          return (r.flags & RC_RAY_KIND_MASK) != RC_RAY_AMBMISS;
-        });
-        misses.insert(misses.end(), miss, next.end());
-        next.erase(miss, next.end());
-      }
       queue = std::move(next);
     }
     timed.emplace(prof, Phase::Batch);
@@ -1055,7 +1047,7 @@ struct Renderer::Impl {
     std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
     for (std::size_t i = 0; i < n; ++i)
       tally.supersampled(req[i], children.data() + spawn_off[i], counts[i]);
-    next.insert(next.end(), children.begin(), children.end());
+    append_children(children, next);
   }
 
   // Slot sizes for a wave: the counts of an even spread of its rays (at most 512 of them,
@@ -1093,6 +1085,17 @@ struct Renderer::Impl {
     };
     cap_shadow = quantile(bnshadow.to_vector<std::uint32_t>(m));
     cap_spawn = quantile(bnspawn.to_vector<std::uint32_t>(m));
+  }
+
+  // A wave's children join the next wave; while the cache is built, its record requests (they
+  // are not rays) go to `misses` instead, in the same order.
+  void append_children(const std::vector<rc_ray>& children, std::vector<rc_ray>& next) {
+    if (!collecting) {
+      next.insert(next.end(), children.begin(), children.end());
+      return;
+    }
+    for (const rc_ray& r : children)
+      ((r.flags & RC_RAY_KIND_MASK) == RC_RAY_AMBMISS ? misses : next).push_back(r);
   }
 
   // Shades the rays `over` (slice indices) again, their records written into exact room, and
@@ -1187,7 +1190,7 @@ struct Renderer::Impl {
     }
     if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
     if (direct_off) {
-      next.insert(next.end(), children.begin(), children.end());
+      append_children(children, next);
       return;
     }
     device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
@@ -1224,7 +1227,7 @@ struct Renderer::Impl {
         tally.shaded(rays[i], hit[i], total[i], children.data() + spawn_off[i], end - spawn_off[i],
                      ts.data(), ts.size());
       }
-      next.insert(next.end(), children.begin(), children.end());
+      append_children(children, next);
       return;
     }
     for (std::size_t i = 0; i < n; ++i) {
@@ -1239,7 +1242,7 @@ struct Renderer::Impl {
         m[2] += total[i].z;
       }
     }
-    next.insert(next.end(), children.begin(), children.end());
+    append_children(children, next);
   }
 
   // Embree over the wave; depth-0 hits also fill the primaries' geometric results.

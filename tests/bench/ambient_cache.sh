@@ -11,6 +11,9 @@
 # RADIANCE_BIN set to a directory holding Radiance's rtrace and rpict, Radiance runs here too,
 # in the same go, and its times and errors come from that run.
 #
+# BENCH_REPEAT=n runs each sensor case and rpict n times on both sides and reports the median
+# time (the lent GPU machine's times vary by up to 1.6x from call to call; the sphere runs once).
+#
 # usage: tests/bench/ambient_cache.sh [build-dir] [threads]   (rpict uses every core)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -23,6 +26,15 @@ times=$ref/radiance_times.tsv
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
+repeat=${BENCH_REPEAT:-1}
+# median input-file command... : runs the command (a function printing seconds) $repeat times,
+# each reading the input file afresh; prints the median.
+median() {
+  local k in=$1
+  shift
+  for ((k = 0; k < repeat; k++)); do "$@" < "$in"; done | sort -n | awk '{ v[NR] = $1 }
+    END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+}
 ref_time() { awk -F'\t' -v n="$1" '$1 == n { print $2 }' "$times"; }
 # Mean and worst relative luminance error of $1 against $2 (rgb per line).
 errs() {
@@ -58,12 +70,12 @@ for name in office_clear_default office_overcast_default luminaires_default; do
   opts="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3"
   # One sensor first, so the scene's program is compiled (and cached) before the timed run.
   run "$work/warm.txt" -ab 5 -ad 64 -as 0 -ar 256 -aa 0.15 -lw 1e-3 "$oct" < <(head -n 1 "$scenes/$pts") >/dev/null
-  secs=$(run "$work/$name.txt" $opts "$oct" < "$scenes/$pts")
+  secs=$(median "$scenes/$pts" run "$work/$name.txt" $opts "$oct")
   # Radiance on this machine when RADIANCE_BIN names its binaries (its errors from that run),
   # else its stored time and result.
   rt=$(ref_time "$name") rres=$ref/$name.txt where=stored
   if [ -n "${RADIANCE_BIN:-}" ]; then
-    rt=$(radiance "$work/r_$name.txt" rtrace -h -I $opts "$oct" < "$scenes/$pts")
+    rt=$(median "$scenes/$pts" radiance "$work/r_$name.txt" rtrace -h -I $opts "$oct")
     rres=$work/r_$name.txt where=here
   fi
   exact=$data/${base}_mc5.txt
@@ -104,12 +116,12 @@ echo "rpict office_view (-ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128), cache built a
 printf '%-12s %9s %11s %12s\n' resolution radcl_s radiance_s pixels/s
 pict 16 > /dev/null # compiles office_view's program
 for res in 256 1024; do
-  secs=$(pict "$res")
+  secs=$(median /dev/null pict "$res")
   rt=n/a
   [ "$res" = 256 ] && rt=$(ref_time office_view)
   if [ -n "${RADIANCE_BIN:-}" ]; then
-    rt=$(radiance /dev/null rpict -vf office.vf -x "$res" -y "$res" -ab 2 -ad 1024 -as 256 \
-      -aa 0.15 -ar 128 office_clear.oct)
+    rt=$(median /dev/null radiance /dev/null rpict -vf office.vf -x "$res" -y "$res" -ab 2 -ad 1024 \
+      -as 256 -aa 0.15 -ar 128 office_clear.oct)
   fi
   printf '%-12s %9s %11s %12.0f\n' "${res}x$res" "$secs" "$rt" \
     "$(awk -v s="$secs" -v r="$res" 'BEGIN { print r * r / s }')"
