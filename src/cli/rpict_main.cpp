@@ -10,6 +10,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -385,6 +386,8 @@ int rpict_main(int argc, char** argv) {
 
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               std::max<std::size_t>(1, std::thread::hardware_concurrency()));
+  std::future<void> device_start; // the device starts while the scene loads
+  if (!persist) device_start = device::start_default_context();
   // No octree argument: the octree comes on standard input (never with -S, whose views do).
   scene::LoadedScene ls = octree.empty() ? scene::load_octree_data(read_stdin(), "standard input")
                                          : scene::load_scene({octree});

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -390,6 +391,8 @@ int rtrace_main(int argc, char** argv) {
     return cli::attach_persist(cmd.opt.persist_file, args[0]); // another one was quicker
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(std::max(1, cmd.opt.nproc)));
+  std::future<void> device_start; // the device starts while the scene loads
+  if (!spec.cast_only && !persist) device_start = device::start_default_context();
   scene::LoadedScene ls = scene::load_scene(inputs);
   std::unique_ptr<Tracer> tracer;
   cli::PersistJobs jobs;

@@ -81,4 +81,13 @@ Context& default_context() {
   return *ctx;
 }
 
+std::future<void> start_default_context() {
+  return std::async(std::launch::async, [] {
+    try {
+      default_context();
+    } catch (...) { // reported by the call that needs the device
+    }
+  });
+}
+
 } // namespace radcl::device

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <future>
 #include <memory>
 #include <vector>
 
@@ -61,5 +62,11 @@ private:
 
 // The device chosen by RADCL_DEVICE (see select_device), shared by the whole process.
 Context& default_context();
+
+// Starts default_context()'s set-up on another thread, so that the driver's start-up (a few
+// tenths of a second for NVIDIA's) overlaps the scene's loading; a later default_context() waits
+// for it. A failure there is not reported: default_context() tries again and reports it. Not
+// for a process that forks before it uses the device.
+std::future<void> start_default_context();
 
 } // namespace radcl::device
