@@ -360,7 +360,7 @@ struct Renderer::Impl {
   // one of its first pass without a miss, so it is computed as Radiance computes it once the
   // records it needs exist.
   static constexpr int kRounds = 12;
-  bool direct_off = false; // this pass's values are thrown away: no shadow rays, no sums
+  bool throwaway = false; // this pass's values are thrown away: no shadow rays, no sums
 
   // Whether every ray of a cache-build pass looks records up and none can be accepted: rays at
   // ambient depth d (starts', else 0) below -ab, and no record of level d or lower.
@@ -411,7 +411,7 @@ struct Renderer::Impl {
       set_collect(!last);
       // A first pass whose every lookup must miss (no record is at or below its rays' ambient
       // depth) is thrown away whole: its shadow rays are not traced, and every ray goes again.
-      direct_off = round == 0 && !last && will_all_miss(st);
+      throwaway = round == 0 && !last && will_all_miss(st);
       misses.clear();
       timed.reset();
       const auto t0 = std::chrono::steady_clock::now();
@@ -420,7 +420,7 @@ struct Renderer::Impl {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       timed.emplace(prof, Phase::Bookkeeping);
       set_collect(false);
-      const bool thrown = std::exchange(direct_off, false);
+      const bool thrown = std::exchange(throwaway, false);
       starts = saved_starts;
       tree = saved_tree;
       std::vector<rc_ray> miss = std::move(misses);
@@ -1169,12 +1169,12 @@ struct Renderer::Impl {
     std::vector<std::uint32_t> nsh = shadow_off, nsp = spawn_off;
     std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
     // A thrown-away pass wants only the children (they may miss too).
-    std::vector<rc_shadow> shadows(direct_off ? 0 : nshadow);
+    std::vector<rc_shadow> shadows(throwaway ? 0 : nshadow);
     std::vector<rc_ray> children(nspawn);
     {
       // Only this slice's slots, read once (not the pool buffers whole, both ways).
       const auto* ssh =
-          direct_off
+          throwaway
               ? nullptr
               : static_cast<const rc_shadow*>(bslot_sh.peek(n * csh * sizeof(rc_shadow), peek_sh));
       const auto* ssp =
@@ -1189,7 +1189,7 @@ struct Renderer::Impl {
       });
     }
     if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
-    if (direct_off) {
+    if (throwaway) {
       append_children(children, next);
       return;
     }

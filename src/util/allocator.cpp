@@ -38,8 +38,10 @@ void use_huge_pages(char** argv) {
       tunables.empty() ? "glibc.malloc.hugetlb=1" : tunables + ":glibc.malloc.hugetlb=1";
   if (setenv("GLIBC_TUNABLES", v.c_str(), 1) != 0) return;
   execv("/proc/self/exe", argv);
-  unsetenv("GLIBC_TUNABLES"); // the exec failed: go on as we are
-  if (t) setenv("GLIBC_TUNABLES", t, 1);
+  if (t) // the exec failed: go on as we are
+    setenv("GLIBC_TUNABLES", tunables.c_str(), 1);
+  else
+    unsetenv("GLIBC_TUNABLES");
 #else
   (void)argv;
 #endif
