@@ -322,6 +322,9 @@ typedef struct rc_amb_sample {
 #define RC_AMB_FAILED 0     /* no sample: no value */
 #define RC_AMB_VALUE_ONLY -1 /* a value to use but no record to keep */
 #define RC_AMB_RECORD 1     /* a record */
+/* rc_make_record's work-group: the items that share one hemisphere (fixed, so that its sums
+ * are added in the same order on every device). */
+#define RC_AMR_GROUP 64u
 typedef struct rc_amb_made {
   rc_u32 corral; /* sectors of possible light leaks (Radiance's ambcorral) */
   rc_i32 status; /* RC_AMB_* */

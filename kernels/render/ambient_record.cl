@@ -116,33 +116,39 @@ static void rc_amr_add_edge(const rc_amr_frame* f, global const rc_amb_sample* s
   *hess += w * h;
 }
 
-/* Sum over the mesh's triangles of weight x (the triangle's edges' terms), gathered per edge: an
- * inner edge is shared by two triangles that run it in opposite directions, so it counts once
- * with the difference of their weights (an edge between equal weights costs nothing). */
-static void rc_amr_mesh_sums(const rc_amr_frame* f, global const rc_amb_sample* s, uint ns,
-                             float sc, float fl, float2* grad, float3* hess) {
-  *grad = (float2)(0.0f);
-  *hess = (float3)(0.0f);
-  for (uint i = 0; i < ns; ++i)
-    for (uint j = 0; j < ns; ++j) {
-      float ta = 0.0f, tb = 0.0f;
-      if (i + 1u < ns && j + 1u < ns) {
-        ta = rc_amr_tri_a(s, ns, i, j, sc, fl);
-        tb = rc_amr_tri_b(s, ns, i, j, sc, fl);
-        /* diagonal (i,j+1) -> (i+1,j): forward in A, backward in B */
-        rc_amr_add_edge(f, s, i * ns + j + 1u, (i + 1u) * ns + j, ta - tb, grad, hess);
-      }
-      if (j + 1u < ns) { /* row edge (i,j) -> (i,j+1): forward in A(i,j), back in B(i-1,j) */
-        float w = i + 1u < ns ? ta : 0.0f;
-        if (i > 0u) w -= rc_amr_tri_b(s, ns, i - 1u, j, sc, fl);
-        rc_amr_add_edge(f, s, i * ns + j, i * ns + j + 1u, w, grad, hess);
-      }
-      if (i + 1u < ns) { /* column edge (i,j) -> (i+1,j): forward in B(i,j-1), back in A(i,j) */
-        float w = j + 1u < ns ? -ta : 0.0f;
-        if (j > 0u) w += rc_amr_tri_b(s, ns, i, j - 1u, sc, fl);
-        rc_amr_add_edge(f, s, i * ns + j, (i + 1u) * ns + j, w, grad, hess);
-      }
-    }
+/* Cell (i, j)'s share of the sum over the mesh's triangles of weight x (the triangle's edges'
+ * terms), added to grad and hess. The sum is gathered per edge: an inner edge is shared by two
+ * triangles that run it in opposite directions, so it counts once with the difference of their
+ * weights (an edge between equal weights costs nothing); cell (i, j) owns the edges leaving
+ * (i, j) along its row and column and its A triangle's diagonal. */
+static void rc_amr_cell_sums(const rc_amr_frame* f, global const rc_amb_sample* s, uint ns, uint i,
+                             uint j, float sc, float fl, float2* grad, float3* hess) {
+  float ta = 0.0f, tb = 0.0f;
+  if (i + 1u < ns && j + 1u < ns) {
+    ta = rc_amr_tri_a(s, ns, i, j, sc, fl);
+    tb = rc_amr_tri_b(s, ns, i, j, sc, fl);
+    /* diagonal (i,j+1) -> (i+1,j): forward in A, backward in B */
+    rc_amr_add_edge(f, s, i * ns + j + 1u, (i + 1u) * ns + j, ta - tb, grad, hess);
+  }
+  if (j + 1u < ns) { /* row edge (i,j) -> (i,j+1): forward in A(i,j), back in B(i-1,j) */
+    float w = i + 1u < ns ? ta : 0.0f;
+    if (i > 0u) w -= rc_amr_tri_b(s, ns, i - 1u, j, sc, fl);
+    rc_amr_add_edge(f, s, i * ns + j, i * ns + j + 1u, w, grad, hess);
+  }
+  if (i + 1u < ns) { /* column edge (i,j) -> (i+1,j): forward in B(i,j-1), back in A(i,j) */
+    float w = j + 1u < ns ? -ta : 0.0f;
+    if (j > 0u) w += rc_amr_tri_b(s, ns, i, j - 1u, sc, fl);
+    rc_amr_add_edge(f, s, i * ns + j, (i + 1u) * ns + j, w, grad, hess);
+  }
+}
+
+/* Stratum k's term of the rotational gradient's sum: Y tan(theta) towards the sample. A sample
+ * met in the tangent plane itself (a direction on the disc's rim, z rounded to 0) has no finite
+ * tangent: it would make the gradient NaN. */
+static float2 rc_amr_tangent_term(const rc_amr_frame* f, global const rc_amb_sample* s, uint k,
+                                  float sc, float fl) {
+  float3 v = rc_amr_local(f, s[k].pnt.xyz - f->o);
+  return v.z > 1e-6f * length(v) ? v.xy * (rc_amr_y(s, k, sc, fl) / v.z) : (float2)(0.0f);
 }
 
 /* Radii and axes from the tangential Hessian (Radiance's eigenvectors): radius (4/|lambda|)^1/4
@@ -209,38 +215,34 @@ static uint rc_amr_corral(const rc_amr_frame* f, global const rc_amb_sample* s, 
   return flags;
 }
 
-/* The record of one complete hemisphere of ns >= 7 strata whose values sum to `sum`; returns
- * the status. */
-static int rc_amr_full(const rc_amb_hemi* hp, global const rc_amb_sample* s, float3 sum,
-                       rc_amb_record* rec, uint* corral) {
+/* Relative brightness: Y = 0.99 L / mean + 0.01 (scale sc, floor fl). A black hemisphere
+ * falls back on the geometric Hessian (Y = 1 everywhere), with no gradients (its corral bits are
+ * made: below). Returns whether the hemisphere is lit. */
+static bool rc_amr_scale(float3 sum, uint ns, float* sc, float* fl) {
+  float bs = RC_AMR_AVGREFL * rc_amr_bright(sum); /* Radiance's bright(rcol) */
+  bool lit = bs > RC_AMR_FTINY;
+  *sc = lit ? 0.99f * (float)(ns * ns) / rc_amr_bright(sum) : RC_AMR_AVGREFL * bs;
+  *fl = lit ? 0.01f : 1.0f;
+  return lit;
+}
+
+/* The record of one complete hemisphere of ns >= 7 strata whose values sum to `sum`, from the
+ * mesh's sums g (gradient) and h (Hessian) and the rotational sum t; returns the status. */
+static int rc_amr_full(const rc_amb_hemi* hp, global const rc_amb_sample* s, float3 sum, float2 g,
+                       float3 h, float2 t, rc_amb_record* rec, uint* corral) {
   const uint ns = hp->ns;
   const float n2 = (float)(ns * ns);
   const float minarad = hp->nrm.w, maxarad = hp->ux.w, aa = hp->uy.w, wt = hp->pos.w;
   rc_amr_frame f = {hp->pos.xyz, hp->ux.xyz, hp->uy.xyz, hp->nrm.xyz};
-  /* Relative brightness: Y = 0.99 L / mean + 0.01. A black hemisphere falls back on the
-   * geometric Hessian (Y = 1 everywhere), with no gradients (its corral bits are made: below). */
-  float bs = RC_AMR_AVGREFL * rc_amr_bright(sum); /* Radiance's bright(rcol) */
-  bool lit = bs > RC_AMR_FTINY;
-  float sc = lit ? 0.99f * n2 / rc_amr_bright(sum) : RC_AMR_AVGREFL * bs;
-  float fl = lit ? 0.01f : 1.0f;
-
-  float2 g;
-  float3 h;
-  rc_amr_mesh_sums(&f, s, ns, sc, fl, &g, &h);
+  float sc, fl;
+  bool lit = rc_amr_scale(sum, ns, &sc, &fl);
   float2 u0, ra;
   rc_amr_axes(h, maxarad, &u0, &ra);
   float2 u1 = (float2)(-u0.y, u0.x);
   float2 pg = (float2)(0.0f), dg = (float2)(0.0f);
   if (lit) {
     pg = (float2)(dot(g, u0), dot(g, u1));
-    /* rotational gradient: sum of Y tan(theta) towards each sample, turned by 90 degrees */
-    float2 t = (float2)(0.0f);
-    for (uint k = 0; k < ns * ns; ++k) {
-      float3 v = rc_amr_local(&f, s[k].pnt.xyz - f.o);
-      /* A sample met in the tangent plane itself (a direction on the disc's rim, z rounded to
-       * 0) has no finite tangent: it would make the gradient NaN. */
-      if (v.z > 1e-6f * length(v)) t += v.xy * (rc_amr_y(s, k, sc, fl) / v.z);
-    }
+    /* rotational gradient: the sum of Y tan(theta) towards each sample, turned by 90 degrees */
     dg = (float2)(-dot(u1, t), dot(u0, t)) / n2;
     /* radii no larger than the gradient allows */
     if (ra.x * fabs(pg.x) > 1.0f) ra.x = 1.0f / fabs(pg.x);
@@ -273,23 +275,59 @@ static int rc_amr_full(const rc_amb_hemi* hp, global const rc_amb_sample* s, flo
   return ra.x > RC_AMR_FTINY ? RC_AMB_RECORD : RC_AMB_VALUE_ONLY;
 }
 
-/* One work-item per hemisphere. */
-kernel void rc_make_record(global const rc_amb_hemi* hemis, global const rc_amb_sample* samples,
-                           uint nhemi, global rc_amb_record* recs, global rc_amb_made* made) {
-  uint k = get_global_id(0);
-  if (k >= nhemi) return;
+/* One work-group of RC_AMR_GROUP items per hemisphere. The mesh's and the rotational
+ * gradient's sums (thousands of edges, each with an arctangent: one item alone is latency-bound
+ * on a GPU) are split over the items by strata and added up in a fixed tree, so a record does
+ * not depend on the device; the value's sum and the rest are the first item's. */
+kernel __attribute__((reqd_work_group_size(RC_AMR_GROUP, 1, 1))) void
+rc_make_record(global const rc_amb_hemi* hemis, global const rc_amb_sample* samples, uint nhemi,
+               global rc_amb_record* recs, global rc_amb_made* made) {
+  local float4 part_h[RC_AMR_GROUP], part_g[RC_AMR_GROUP];
+  local float4 value; /* the strata's sum; w: how many succeeded */
+  const uint k = get_group_id(0), lid = get_local_id(0);
+  if (k >= nhemi) return; /* the whole group */
   rc_amb_hemi hp = hemis[k];
   global const rc_amb_sample* s = samples + hp.first;
-  uint n2 = hp.ns * hp.ns, ok = 0u;
-  float3 sum = (float3)(0.0f);
-  float3 lost = (float3)(0.0f); /* compensated sum: Radiance adds in double */
-  for (uint q = 0; q < n2; ++q)
-    if (s[q].val.w >= 0.0f) {
-      float3 y = s[q].val.xyz - lost, t = sum + y;
-      lost = (t - sum) - y;
-      sum = t;
-      ++ok;
+  const uint n2 = hp.ns * hp.ns;
+  if (lid == 0u) {
+    float3 sum = (float3)(0.0f);
+    float3 lost = (float3)(0.0f); /* compensated sum: Radiance adds in double */
+    uint ok = 0u;
+    for (uint q = 0; q < n2; ++q)
+      if (s[q].val.w >= 0.0f) {
+        float3 y = s[q].val.xyz - lost, t = sum + y;
+        lost = (t - sum) - y;
+        sum = t;
+        ++ok;
+      }
+    value = (float4)(sum, (float)ok);
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  const float3 sum = value.xyz;
+  const uint ok = (uint)value.w;
+  const bool full = ok == n2 && hp.ns >= RC_AMR_MINADIV; /* the same for every item */
+  if (full) {
+    rc_amr_frame f = {hp.pos.xyz, hp.ux.xyz, hp.uy.xyz, hp.nrm.xyz};
+    float sc, fl;
+    const bool lit = rc_amr_scale(sum, hp.ns, &sc, &fl);
+    float2 g = (float2)(0.0f), t = (float2)(0.0f);
+    float3 h = (float3)(0.0f);
+    for (uint q = lid; q < n2; q += RC_AMR_GROUP) {
+      rc_amr_cell_sums(&f, s, hp.ns, q / hp.ns, q % hp.ns, sc, fl, &g, &h);
+      if (lit) t += rc_amr_tangent_term(&f, s, q, sc, fl);
     }
+    part_h[lid] = (float4)(h, 0.0f);
+    part_g[lid] = (float4)(g, t);
+    barrier(CLK_LOCAL_MEM_FENCE);
+    for (uint w = RC_AMR_GROUP / 2u; w > 0u; w >>= 1) {
+      if (lid < w) {
+        part_h[lid] += part_h[lid + w];
+        part_g[lid] += part_g[lid + w];
+      }
+      barrier(CLK_LOCAL_MEM_FENCE);
+    }
+  }
+  if (lid != 0u) return;
   rc_amb_record rec;
   rec.pos = hp.pos;
   rec.nrm = (float4)(hp.nrm.xyz, 0.0f);
@@ -300,10 +338,10 @@ kernel void rc_make_record(global const rc_amb_hemi* hemis, global const rc_amb_
   int status = RC_AMB_FAILED;
   if (ok == 0u)
     status = RC_AMB_FAILED;
-  else if (ok < n2 || hp.ns < RC_AMR_MINADIV)
+  else if (!full)
     status = RC_AMB_VALUE_ONLY; /* Radiance's soft failure: the value alone */
   else
-    status = rc_amr_full(&hp, s, sum, &rec, &corral);
+    status = rc_amr_full(&hp, s, sum, part_g[0].xy, part_h[0].xyz, part_g[0].zw, &rec, &corral);
   recs[k] = rec;
   rc_amb_made m;
   m.corral = corral;

@@ -89,14 +89,37 @@ void Buffer::write(const void* src, std::size_t bytes, std::size_t offset) {
 }
 
 const void* Buffer::peek(std::size_t bytes, std::vector<char>& staging) const {
+  return peek_into(bytes, staging, false);
+}
+
+const void* Buffer::peek_later(std::size_t bytes, std::vector<char>& staging) const {
+  return peek_into(bytes, staging, true);
+}
+
+const void* Buffer::peek_into(std::size_t bytes, std::vector<char>& staging, bool later) const {
   if (bytes > bytes_) throw FatalError("device buffer read out of range");
   if (host_ && ctx_->direct_host()) {
     ctx_->sync();
     return host_;
   }
   if (staging.size() < bytes) staging.resize(bytes);
-  if (bytes) read(staging.data(), bytes);
+  if (bytes == 0) return staging.data();
+  if (later)
+    read_later(staging.data(), bytes);
+  else
+    read(staging.data(), bytes);
   return staging.data();
+}
+
+void Buffer::read_later(void* dst, std::size_t bytes, std::size_t offset) const {
+  if (offset + bytes > bytes_) throw FatalError("device buffer read out of range");
+  if (bytes == 0) return;
+  if (host_) {
+    read(dst, bytes, offset);
+    return;
+  }
+  RADCL_CL(
+      clEnqueueReadBuffer(ctx_->queue(), mem_, CL_FALSE, offset, bytes, dst, 0, nullptr, nullptr));
 }
 
 void Buffer::read(void* dst, std::size_t bytes, std::size_t offset) const {

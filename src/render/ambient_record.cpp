@@ -1,5 +1,6 @@
 #include "radcl/render/ambient_record.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "radcl/ambient/dircode.h"
@@ -48,7 +49,12 @@ void RecordMaker::run(const device::Buffer& hemis, const device::Buffer& samples
                       std::uint32_t count, device::Buffer& records, device::Buffer& made) {
   if (count == 0) return;
   kernel_.arg(0, hemis).arg(1, samples).arg(2, count).arg(3, records).arg(4, made);
-  ctx_.run(kernel_, count);
+  ctx_.run(kernel_, std::size_t{count} * RC_AMR_GROUP, RC_AMR_GROUP);
+}
+
+device::Buffer& RecordMaker::room(device::Buffer& b, std::size_t bytes) {
+  if (b.size() < bytes) b = device::Buffer(ctx_, bytes + bytes / 2);
+  return b;
 }
 
 MadeRecords RecordMaker::make(std::span<const rc_amb_hemi> hemis,
@@ -56,15 +62,19 @@ MadeRecords RecordMaker::make(std::span<const rc_amb_hemi> hemis,
   MadeRecords out;
   if (hemis.empty()) return out;
   const auto n = static_cast<std::uint32_t>(hemis.size());
-  device::Buffer bh =
-      device::Buffer::from(ctx_, std::vector<rc_amb_hemi>(hemis.begin(), hemis.end()));
-  device::Buffer bs =
-      device::Buffer::from(ctx_, std::vector<rc_amb_sample>(samples.begin(), samples.end()));
-  device::Buffer br(ctx_, n * sizeof(rc_amb_record)), bm(ctx_, n * sizeof(rc_amb_made));
+  // The buffers are kept between calls (a cache build makes records in many small calls).
+  device::Buffer& bh = room(hemis_, hemis.size_bytes());
+  bh.write(hemis.data(), hemis.size_bytes());
+  device::Buffer& bs = room(samples_, std::max<std::size_t>(samples.size_bytes(), 1));
+  if (!samples.empty()) bs.write(samples.data(), samples.size_bytes());
+  device::Buffer& br = room(records_, n * sizeof(rc_amb_record));
+  device::Buffer& bm = room(made_, n * sizeof(rc_amb_made));
   run(bh, bs, n, br, bm);
+  out.records.resize(n);
+  out.made.resize(n);
+  br.read_later(out.records.data(), n * sizeof(rc_amb_record));
+  bm.read_later(out.made.data(), n * sizeof(rc_amb_made));
   ctx_.finish();
-  out.records = br.to_vector<rc_amb_record>(n);
-  out.made = bm.to_vector<rc_amb_made>(n);
   return out;
 }
 

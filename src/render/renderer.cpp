@@ -15,6 +15,7 @@
 #include "radcl/ambient/dircode.h"
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
+#include "radcl/device/growing_buffer.h"
 #include "radcl/device/program.h"
 #include "radcl/render/ambient_cache.h"
 #include "radcl/render/ambient_leaks.h"
@@ -119,7 +120,7 @@ struct Renderer::Impl {
   device::Program program;
   device::Kernel count, shade, accumulate, shadow_step;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
-  device::Buffer amb_records, amb_nodes, amb_blocked;
+  device::GrowingBuffer amb_records, amb_nodes, amb_blocked;
   // Kernel arguments set_scene_args() fills; a kernel's next argument follows them.
   static constexpr unsigned kSceneArgs = 11;
   Vec3d centre;
@@ -180,7 +181,7 @@ struct Renderer::Impl {
         shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
         materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
         patterns(upload(c, cs.patterns)), centre(geom.centre()) {
-    amb_blocked = device::Buffer(c, 16);
+    amb_blocked.update(c, std::vector<std::uint32_t>(4, 0u), 0);
     if (st.ambient_list != RenderSettings::AmbientList::None) {
       mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
                         st.ambient_names);
@@ -273,6 +274,7 @@ struct Renderer::Impl {
   // big loaded cache costs what the new ones cost.
   AmbientCacheBuffers cache_base, marked_base;
   std::size_t base_n = 0;
+  bool base_on_device = false;                // the device's lookup buffers begin with cache_base's
   std::vector<std::uint32_t> marked_base_src; // cache_local index of each marked_base input
   // The lowest level of any record (INT_MAX: none), counted up to level_seen: a lookup at
   // ambient depth d accepts records of level d or lower only.
@@ -297,6 +299,7 @@ struct Renderer::Impl {
       return leak_test ? build_ambient_cache(recs, {0, 0, 0}, settings.aa) : AmbientCacheBuffers{};
     };
     if (n < base_n || n - base_n > std::max<std::size_t>(2048, base_n / 2)) {
+      base_on_device = false;
       base_n = n;
       cache_base = build_ambient_cache(std::span(cache_local).first(n), {0, 0, 0}, settings.aa);
       marked_base = marked_of(0, n, marked_base_src);
@@ -333,8 +336,12 @@ struct Renderer::Impl {
                                       cache_records);
       base.av = f4(v[0], v[1], v[2], settings.lw);
     }
-    amb_records = upload(ctx, cache.records);
-    amb_nodes = upload(ctx, cache.nodes);
+    // The joined forest starts with the large tree's nodes and records, which the device
+    // already holds unless that tree was just rebuilt.
+    const bool keep = base_on_device && !cache_base.nodes.empty();
+    amb_records.update(ctx, cache.records, keep ? cache_base.records.size() : 0);
+    amb_nodes.update(ctx, cache.nodes, keep ? cache_base.nodes.size() : 0);
+    base_on_device = true;
     rc_params p = base;
     p.amb.w = collecting ? 1.0f : 0.0f;
     params.write(&p, sizeof p);
@@ -736,9 +743,9 @@ struct Renderer::Impl {
         .arg(first + 5, mirrors)
         .arg(first + 6, params)
         .arg(first + 7, patterns)
-        .arg(first + 8, amb_records)
-        .arg(first + 9, amb_nodes)
-        .arg(first + 10, amb_blocked);
+        .arg(first + 8, amb_records.buffer())
+        .arg(first + 9, amb_nodes.buffer())
+        .arg(first + 10, amb_blocked.buffer());
   }
 
   // One launch of rc_shade over `n` rays: per ray, its output offsets (or, with caps, where the
@@ -1083,8 +1090,12 @@ struct Renderer::Impl {
       std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
       return std::max<std::uint32_t>(1, v[k]);
     };
-    cap_shadow = quantile(bnshadow.to_vector<std::uint32_t>(m));
-    cap_spawn = quantile(bnspawn.to_vector<std::uint32_t>(m));
+    std::vector<std::uint32_t> csh(m), csp(m);
+    bnshadow.read_later(csh.data(), m * 4);
+    bnspawn.read_later(csp.data(), m * 4);
+    ctx.finish();
+    cap_shadow = quantile(std::move(csh));
+    cap_spawn = quantile(std::move(csp));
   }
 
   // A wave's children join the next wave; while the cache is built, its record requests (they
@@ -1124,8 +1135,11 @@ struct Renderer::Impl {
     device::Buffer& bsp = scratch(kSpawned, std::size_t{tsp} * sizeof(rc_ray));
     device::Buffer& bimm = scratch(kTotal, m * sizeof(rc_float4));
     run_shade(ShadeLaunch{&brays, &bhits, &bsoff, &bpoff, &bsh, &bsp, &bimm}, m);
-    std::vector<rc_shadow> sh = bsh.to_vector<rc_shadow>(tsh);
-    std::vector<rc_ray> sp = bsp.to_vector<rc_ray>(tsp);
+    std::vector<rc_shadow> sh(tsh);
+    std::vector<rc_ray> sp(tsp);
+    bsh.read_later(sh.data(), sh.size() * sizeof(rc_shadow));
+    bsp.read_later(sp.data(), sp.size() * sizeof(rc_ray));
+    ctx.finish();
     for (std::size_t k = 0; k < m; ++k) {
       if (!shadows.empty()) // empty: a thrown-away pass
         std::copy_n(sh.data() + soff[k], nsh[over[k]], shadows.data() + shadow_off[over[k]]);
@@ -1158,8 +1172,17 @@ struct Renderer::Impl {
     l.cap_shadow = csh;
     l.cap_spawn = csp;
     run_shade(l, n);
-    std::vector<std::uint32_t> shadow_off = bnshadow.to_vector<std::uint32_t>(n);
-    std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
+    // The counts and this slice's slots (not the pool buffers whole, both ways), read in one
+    // wait: a small wave's time is mostly the latency of its transfers.
+    std::vector<std::uint32_t> shadow_off(n), spawn_off(n);
+    bnshadow.read_later(shadow_off.data(), n * 4);
+    bnspawn.read_later(spawn_off.data(), n * 4);
+    const auto* ssh = throwaway ? nullptr
+                                : static_cast<const rc_shadow*>(
+                                      bslot_sh.peek_later(n * csh * sizeof(rc_shadow), peek_sh));
+    const auto* ssp =
+        static_cast<const rc_ray*>(bslot_sp.peek_later(n * csp * sizeof(rc_ray), peek_sp));
+    ctx.finish();
     std::vector<std::uint32_t> over;
     for (std::size_t i = 0; i < n; ++i)
       if (shadow_off[i] & 0x80000000u) {
@@ -1172,13 +1195,6 @@ struct Renderer::Impl {
     std::vector<rc_shadow> shadows(throwaway ? 0 : nshadow);
     std::vector<rc_ray> children(nspawn);
     {
-      // Only this slice's slots, read once (not the pool buffers whole, both ways).
-      const auto* ssh =
-          throwaway
-              ? nullptr
-              : static_cast<const rc_shadow*>(bslot_sh.peek(n * csh * sizeof(rc_shadow), peek_sh));
-      const auto* ssp =
-          static_cast<const rc_ray*>(bslot_sp.peek(n * csp * sizeof(rc_ray), peek_sp));
       std::vector<char> later(n, 0); // shaded again below
       for (std::uint32_t i : over)
         later[i] = 1;
@@ -1323,7 +1339,7 @@ struct Renderer::Impl {
       leak_lists.insert(leak_lists.end(), lists[c].begin(), lists[c].end());
     }
     if (leak_lists.size() != leak_uploaded) {
-      amb_blocked = upload(ctx, leak_lists);
+      amb_blocked.update(ctx, leak_lists, leak_uploaded);
       leak_uploaded = leak_lists.size();
     }
   }
@@ -1441,8 +1457,9 @@ struct Renderer::Impl {
       shadow_step.arg(0, bcur).arg(1, bhits).arg(2, bstate).arg(3, um);
       set_scene_args(shadow_step, 4);
       ctx.run(shadow_step, m);
-      bcur.read(cur.data(), m * sizeof(rc_shadow)); // into place: no fresh, zeroed vectors
-      bstate.read(state.data(), m * sizeof(std::uint32_t));
+      bcur.read_later(cur.data(), m * sizeof(rc_shadow)); // into place: no fresh, zeroed vectors
+      bstate.read_later(state.data(), m * sizeof(std::uint32_t));
+      ctx.finish();
 
       std::size_t k = 0;
       for (std::size_t i = 0; i < m; ++i) {

@@ -7,6 +7,7 @@
 
 #include "device_fixture.h"
 #include "radcl/device/buffer.h"
+#include "radcl/device/growing_buffer.h"
 #include "radcl/device/program.h"
 #include "radcl/util/error.h"
 
@@ -115,4 +116,66 @@ TEST(Buffer, SeparateMemoryStagesWritesAndPeeks) {
     nonzero += v != 0;
   EXPECT_GT(nonzero, n / 2);
   EXPECT_THROW(a.peek(n * 4 + 1, staging), radcl::FatalError);
+}
+
+// Reads queued with read_later/peek_later hold the data once the context finishes, after a
+// kernel that wrote it; a GrowingBuffer writes only past the elements it is told are
+// unchanged and keeps them across growth. Both memory modes: host (PoCL's zero-copy) and the
+// discrete GPU's separate memory.
+static void check_later_reads_and_growth(Context& ctx) {
+  Program prog(ctx, ProgramSource{{"probe/rng.cl"}, "", "-cl-std=CL1.2"});
+  Kernel k = prog.kernel("rc_rng_fill");
+  const std::uint32_t n = 4096;
+  Buffer out(ctx, n * 4), u(ctx, n * 4), ref(ctx, n * 4);
+  k.arg(0, ref).arg(1, u).arg(2, n).arg(3, 1u).arg(4, 9u);
+  ctx.run(k, n);
+  const std::vector<std::uint32_t> want = ref.to_vector<std::uint32_t>(n);
+  k.arg(0, out);
+  ctx.run(k, n);
+  std::vector<std::uint32_t> head(16), tail(n - 16);
+  out.read_later(head.data(), 16 * 4);
+  out.read_later(tail.data(), (n - 16) * 4, 16 * 4);
+  out.read_later(nullptr, 0); // nothing to read: no transfer
+  std::vector<char> staging;
+  const auto* p = static_cast<const std::uint32_t*>(out.peek_later(n * 4, staging));
+  ctx.finish();
+  for (std::uint32_t i = 0; i < n; ++i) {
+    ASSERT_EQ(i < 16 ? head[i] : tail[i - 16], want[i]) << i;
+    ASSERT_EQ(p[i], want[i]) << i;
+  }
+  EXPECT_THROW(out.read_later(head.data(), 8, n * 4 - 4), radcl::FatalError);
+
+  GrowingBuffer g;
+  std::vector<int> v(10);
+  std::iota(v.begin(), v.end(), 0);
+  g.update(ctx, v, 0);
+  EXPECT_EQ(g.buffer().to_vector<int>(10), v);
+  v[3] = -3; // the caller says only the first 2 are unchanged: 3.. are rewritten
+  v.push_back(10);
+  g.update(ctx, v, 2);
+  EXPECT_EQ(g.buffer().to_vector<int>(11), v);
+  const auto* before = g.buffer().handle();
+  v.push_back(11); // fits the spare room: same buffer
+  g.update(ctx, v, v.size() - 1);
+  EXPECT_EQ(g.buffer().handle(), before);
+  EXPECT_EQ(g.buffer().to_vector<int>(12), v);
+  for (int i = 0; i < 100; ++i)
+    v.push_back(100 + i); // past the room: a new buffer holding everything
+  g.update(ctx, v, 12);
+  EXPECT_GE(g.buffer().size(), v.size() * sizeof(int));
+  EXPECT_EQ(g.buffer().to_vector<int>(v.size()), v);
+  v.clear();
+  g.update(ctx, v, 0); // empty: a buffer is still there to bind
+  EXPECT_GE(g.buffer().size(), sizeof(int));
+}
+
+TEST(Buffer, LaterReadsAndGrowingBuffersHostMemory) {
+  check_later_reads_and_growth(test_context());
+}
+
+TEST(Buffer, LaterReadsAndGrowingBuffersSeparateMemory) {
+  setenv("RADCL_DEVICE_MEMORY", "separate", 1);
+  Context ctx(select_device());
+  unsetenv("RADCL_DEVICE_MEMORY");
+  check_later_reads_and_growth(ctx);
 }

@@ -29,6 +29,10 @@ public:
 
   void write(const void* src, std::size_t bytes, std::size_t offset = 0);
   void read(void* dst, std::size_t bytes, std::size_t offset = 0) const;
+  // A read queued without waiting: `dst` is filled once the context finishes
+  // (Context::finish), so several reads cost one wait. Where the host reads the buffer
+  // directly it is an ordinary read.
+  void read_later(void* dst, std::size_t bytes, std::size_t offset = 0) const;
 
   template <class T> static Buffer from(Context& ctx, const std::vector<T>& v) {
     Buffer b(ctx, v.empty() ? sizeof(T) : v.size() * sizeof(T));
@@ -46,6 +50,8 @@ public:
   // `staging` (one transfer of just those bytes, where mapping would move the whole buffer
   // both ways on a discrete GPU).
   const void* peek(std::size_t bytes, std::vector<char>& staging) const;
+  // The same as a read_later: the bytes are there once the context finishes.
+  const void* peek_later(std::size_t bytes, std::vector<char>& staging) const;
   // Maps the whole buffer for host access (blocking); returns the host pointer. For a
   // zero-copy buffer this is the buffer's own host allocation.
   void* map();
@@ -58,6 +64,7 @@ private:
   void* host_ = nullptr;
   std::size_t bytes_ = 0;
   void release();
+  const void* peek_into(std::size_t bytes, std::vector<char>& staging, bool later) const;
 };
 
 } // namespace radcl::device

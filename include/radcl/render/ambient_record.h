@@ -10,13 +10,9 @@
 #include <vector>
 
 #include "radcl/ambient/record.h"
+#include "radcl/device/buffer.h"
 #include "radcl/device/program.h"
 #include "radcl/device_types.h"
-
-namespace radcl::device {
-class Buffer;
-class Context;
-} // namespace radcl::device
 
 namespace radcl::render {
 
@@ -60,6 +56,8 @@ private:
   device::Context& ctx_;
   device::Program program_;
   device::Kernel kernel_;
+  device::Buffer hemis_, samples_, records_, made_; // make()'s, grown as needed
+  device::Buffer& room(device::Buffer& b, std::size_t bytes);
 };
 
 // A made record in the file's form: world position (re-centred position + `centre`, in double),
