@@ -113,6 +113,14 @@ private:
   AmbientCacheBuffers& out_;
 };
 
+// One Embree device for every build: a cache build uploads its tree a few hundred times, and
+// a new device per build (thread pool and CPU checks) cost more than building small trees.
+RTCDevice builder_device() {
+  static const RTCDevice dev = rtcNewDevice(nullptr);
+  if (!dev) throw FatalError("cannot create an Embree device for the ambient cache");
+  return dev;
+}
+
 } // namespace
 
 double ambient_min_radius(double cube_size, int ar) {
@@ -169,8 +177,7 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
   if (recs.empty()) return out;
 
   // One tree per orientation bin, in bin order (rc_amb_node).
-  RTCDevice dev = rtcNewDevice(nullptr);
-  if (!dev) throw FatalError("cannot create an Embree device for the ambient cache");
+  RTCDevice dev = builder_device();
   out.records.reserve(recs.size());
   out.corral.reserve(recs.size());
   out.source.reserve(recs.size());
@@ -213,13 +220,11 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
     void* root = rtcBuildBVH(&a);
     if (!root) {
       rtcReleaseBVH(bvh);
-      rtcReleaseDevice(dev);
       throw FatalError("cannot build the ambient cache's BVH");
     }
     Flattener(recs, corral, source, bin, out).add(static_cast<const Node*>(root), all);
     rtcReleaseBVH(bvh);
   }
-  rtcReleaseDevice(dev);
   if (out.records.size() != recs.size())
     throw FatalError("ambient cache BVH lost records"); // a leaf larger than kMaxLeaf
   return out;
