@@ -5,12 +5,12 @@
 #include <dlfcn.h>
 #include <mutex>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "image_formats.h"
 #include "radcl/image/oiio_plugin.h"
 #include "radcl/util/error.h"
+#include "radcl/util/program_folder.h"
 
 namespace radcl::image::detail {
 namespace {
@@ -20,14 +20,6 @@ struct Plugin {
   decltype(&radcl_oiio_read) read = nullptr;
   std::string error; // why it could not be opened
 };
-
-std::string program_dir() {
-  std::vector<char> buf(4096);
-  const ssize_t n = ::readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-  if (n <= 0) return {};
-  std::string exe(buf.data(), static_cast<std::size_t>(n));
-  return exe.substr(0, exe.rfind('/'));
-}
 
 // The file RADCL_OIIO_PLUGIN names, else ../lib/ beside the program (the build tree), then
 // the installed library folder.
@@ -40,7 +32,7 @@ Plugin open_plugin() {
   if (const char* e = std::getenv("RADCL_OIIO_PLUGIN"); e && *e) {
     tries.emplace_back(e);
   } else {
-    tries.push_back(program_dir() + "/../lib/" RADCL_OIIO_PLUGIN_NAME);
+    tries.push_back(program_folder() + "/../lib/" RADCL_OIIO_PLUGIN_NAME);
     tries.emplace_back(RADCL_INSTALL_PLUGIN_DIR "/" RADCL_OIIO_PLUGIN_NAME);
   }
   for (const std::string& f : tries) {
