@@ -1173,7 +1173,13 @@ struct Renderer::Impl {
     ShadeLaunch l{&brays, &bhits, &bnshadow, &bnspawn, &bslot_sh, &bslot_sp, &bimm};
     l.cap_shadow = csh;
     l.cap_spawn = csp;
+    const auto w0 = std::chrono::steady_clock::now();
     run_shade(l, n);
+    std::chrono::steady_clock::time_point w1;
+    if (prof.waves()) {
+      ctx.finish();
+      w1 = std::chrono::steady_clock::now();
+    }
     // The counts and this slice's slots (not the pool buffers whole, both ways), read in one
     // wait: a small wave's time is mostly the latency of its transfers.
     std::vector<std::uint32_t> shadow_off(n), spawn_off(n);
@@ -1185,6 +1191,11 @@ struct Renderer::Impl {
     const auto* ssp =
         static_cast<const rc_ray*>(bslot_sp.peek_later(n * csp * sizeof(rc_ray), peek_sp));
     ctx.finish();
+    if (prof.waves()) {
+      const auto w2 = std::chrono::steady_clock::now();
+      prof.add_wave(n, std::chrono::duration<double>(w1 - w0).count(),
+                    std::chrono::duration<double>(w2 - w1).count());
+    }
     std::vector<std::uint32_t> over;
     for (std::size_t i = 0; i < n; ++i)
       if (shadow_off[i] & 0x80000000u) {

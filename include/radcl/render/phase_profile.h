@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iterator>
+#include <string>
 
 namespace radcl::render {
 
@@ -34,8 +35,23 @@ enum class Phase {
 class PhaseProfile {
 public:
   PhaseProfile()
-      : on_(std::getenv("RADCL_PROFILE") != nullptr), t0_(std::chrono::steady_clock::now()) {}
+      : on_(std::getenv("RADCL_PROFILE") != nullptr), t0_(std::chrono::steady_clock::now()) {
+    const char* p = std::getenv("RADCL_PROFILE");
+    waves_ = p && std::string(p) == "waves";
+  }
   bool on() const { return on_; }
+  // RADCL_PROFILE=waves: the shading kernel is waited for on its own, and its time and that of
+  // the slot reads after it are summed by wave size (the extra wait costs a little).
+  bool waves() const { return waves_; }
+  void add_wave(std::size_t rays, double kernel, double reads) {
+    int b = 0;
+    for (std::size_t lim : kWaveBins)
+      if (rays >= lim) ++b;
+    ++wave_n_[b];
+    wave_rays_[b] += rays;
+    wave_kernel_[b] += kernel;
+    wave_reads_[b] += reads;
+  }
   void add(Phase p, double seconds) {
     sec_[static_cast<int>(p)] += seconds;
     ++calls_[static_cast<int>(p)];
@@ -58,6 +74,14 @@ public:
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
     std::fprintf(f, "profile: %-12s %9.3f s\nprofile: %-12s %9.3f s\n", "lifetime", life, "untimed",
                  life - timed);
+    for (std::size_t b = 0; b < wave_n_.size(); ++b)
+      if (wave_n_[b])
+        std::fprintf(
+            f,
+            "profile: waves from %6zu rays: %6llu, %9llu rays, kernel %.3f s, reads "
+            "%.3f s\n",
+            b ? kWaveBins[b - 1] : std::size_t{0}, static_cast<unsigned long long>(wave_n_[b]),
+            static_cast<unsigned long long>(wave_rays_[b]), wave_kernel_[b], wave_reads_[b]);
   }
 
   // Times one phase for the scope it lives in (nothing when profiling is off).
@@ -80,7 +104,10 @@ public:
   };
 
 private:
-  bool on_;
+  static constexpr std::array<std::size_t, 5> kWaveBins{64, 256, 1024, 8192, 65536};
+  bool on_, waves_ = false;
+  std::array<std::uint64_t, 6> wave_n_{}, wave_rays_{};
+  std::array<double, 6> wave_kernel_{}, wave_reads_{};
   std::chrono::steady_clock::time_point t0_;
   std::array<double, static_cast<int>(Phase::kCount)> sec_{};
   std::array<std::uint64_t, static_cast<int>(Phase::kCount)> calls_{};
