@@ -118,6 +118,12 @@ void Buffer::read_later(void* dst, std::size_t bytes, std::size_t offset) const 
     read(dst, bytes, offset);
     return;
   }
+  if (void* p = ctx_->pinned(bytes)) { // into pinned room, copied to dst when the queue drains
+    RADCL_CL(
+        clEnqueueReadBuffer(ctx_->queue(), mem_, CL_FALSE, offset, bytes, p, 0, nullptr, nullptr));
+    ctx_->copy_when_drained(p, dst, bytes);
+    return;
+  }
   RADCL_CL(
       clEnqueueReadBuffer(ctx_->queue(), mem_, CL_FALSE, offset, bytes, dst, 0, nullptr, nullptr));
 }
@@ -129,6 +135,9 @@ void Buffer::read(void* dst, std::size_t bytes, std::size_t offset) const {
     void* p = self->map();
     std::memcpy(dst, static_cast<const char*>(p) + offset, bytes);
     self->unmap(p);
+  } else if (ctx_->pins()) {
+    read_later(dst, bytes, offset); // a small one through pinned room: shorter than a pageable read
+    ctx_->finish();
   } else {
     RADCL_CL(
         clEnqueueReadBuffer(ctx_->queue(), mem_, CL_TRUE, offset, bytes, dst, 0, nullptr, nullptr));

@@ -1,6 +1,7 @@
 #include "radcl/device/context.h"
 
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <string>
 
@@ -26,14 +27,67 @@ Context::Context(const DeviceInfo& device) : info_(device) {
     clReleaseContext(context_);
     throw;
   }
+  const char* pin = std::getenv("RADCL_PINNED");
+  use_pinned_ = !zero_copy() && !(pin && std::string(pin) == "0");
 }
 
 Context::~Context() {
   if (queue_) {
     clFinish(queue_);
+    release_pinned();
     clReleaseCommandQueue(queue_);
   }
   if (context_) clReleaseContext(context_);
+}
+
+namespace {
+// Transfers up to this size go through pinned memory: small ones are all latency, and a large
+// one would pay for the extra copy on the host.
+constexpr std::size_t kPinnedMax = std::size_t{1} << 20;
+constexpr std::size_t kPinnedBlock = std::size_t{8} << 20;
+} // namespace
+
+void* Context::pinned(std::size_t bytes) {
+  if (!use_pinned_ || bytes > kPinnedMax) return nullptr;
+  bytes = (bytes + 63) / 64 * 64;
+  for (;; ++pin_block_) {
+    if (pin_block_ == pinned_.size()) {
+      cl_int st = CL_SUCCESS;
+      cl_mem m = clCreateBuffer(context_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, kPinnedBlock,
+                                nullptr, &st);
+      void* h = nullptr;
+      if (st == CL_SUCCESS) // blocking, but once per block for the whole run
+        h = clEnqueueMapBuffer(queue_, m, CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0, kPinnedBlock, 0,
+                               nullptr, nullptr, &st);
+      if (st != CL_SUCCESS || !h) { // no pinned memory here: transfer from where data lies
+        if (m) clReleaseMemObject(m);
+        use_pinned_ = false;
+        return nullptr;
+      }
+      pinned_.push_back({m, static_cast<char*>(h), kPinnedBlock, 0});
+    }
+    PinnedBlock& b = pinned_[pin_block_];
+    if (b.used + bytes <= b.size) {
+      void* p = b.host + b.used;
+      b.used += bytes;
+      return p;
+    }
+  }
+}
+
+void Context::copy_when_drained(const void* from, void* to, std::size_t bytes) {
+  copy_back_.push_back({from, to, bytes});
+}
+
+void Context::release_pinned() {
+  for (PinnedBlock& b : pinned_) {
+    cl_mem m = static_cast<cl_mem>(b.mem);
+    clEnqueueUnmapMemObject(queue_, m, b.host, 0, nullptr, nullptr);
+  }
+  if (!pinned_.empty()) clFinish(queue_);
+  for (PinnedBlock& b : pinned_)
+    clReleaseMemObject(static_cast<cl_mem>(b.mem));
+  pinned_.clear();
 }
 
 void Context::run(Kernel& kernel, std::size_t items, std::size_t group) {
@@ -53,6 +107,10 @@ void Context::finish() {
 }
 
 const void* Context::stage(const void* src, std::size_t bytes) {
+  if (void* p = pinned(bytes)) {
+    std::memcpy(p, src, bytes);
+    return p;
+  }
   std::vector<char> b;
   if (!spare_.empty()) {
     b = std::move(spare_.back());
@@ -64,6 +122,12 @@ const void* Context::stage(const void* src, std::size_t bytes) {
 }
 
 void Context::drained() {
+  for (const CopyBack& c : copy_back_)
+    std::memcpy(c.to, c.from, c.bytes);
+  copy_back_.clear();
+  for (PinnedBlock& b : pinned_)
+    b.used = 0;
+  pin_block_ = 0;
   // Keep a few blocks (their memory is already mapped) for the next transfers.
   for (auto& b : staged_)
     if (spare_.size() < 16) spare_.push_back(std::move(b));

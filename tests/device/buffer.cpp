@@ -179,3 +179,49 @@ TEST(Buffer, LaterReadsAndGrowingBuffersSeparateMemory) {
   unsetenv("RADCL_DEVICE_MEMORY");
   check_later_reads_and_growth(ctx);
 }
+
+// Separate memory goes through pinned host memory for transfers up to 1 MiB (staged writes and
+// reads queued for later, copied out when the queue drains). Enough small transfers between
+// two waits to fill more than one 8 MiB block, reads of both sizes, and a blocking read that
+// delivers the reads queued before it; RADCL_PINNED=0 (pageable only) must agree.
+static void check_pinned_transfers(bool pinned) {
+  setenv("RADCL_DEVICE_MEMORY", "separate", 1);
+  if (!pinned) setenv("RADCL_PINNED", "0", 1);
+  Context ctx(select_device());
+  unsetenv("RADCL_DEVICE_MEMORY");
+  unsetenv("RADCL_PINNED");
+  EXPECT_EQ(ctx.pins(), pinned);
+  const std::size_t n = 40, words = 64 * 1024; // 256 KiB each, 10 MiB in all
+  std::vector<Buffer> bufs;
+  for (std::size_t i = 0; i < n; ++i) {
+    bufs.emplace_back(ctx, words * 4);
+    std::vector<std::uint32_t> v(words);
+    std::iota(v.begin(), v.end(), static_cast<std::uint32_t>(i * 1000));
+    bufs.back().write(v.data(), words * 4);
+  }
+  std::vector<std::vector<std::uint32_t>> got(n, std::vector<std::uint32_t>(words));
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    bufs[i].read_later(got[i].data(), words * 4);
+  // A blocking read: everything queued before it is done and delivered too.
+  got[n - 1] = bufs[n - 1].to_vector<std::uint32_t>(words);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < words; k += 997)
+      ASSERT_EQ(got[i][k], i * 1000 + k) << i << " " << k;
+  // Over 1 MiB: a pageable transfer either way.
+  const std::size_t big = 600 * 1024;
+  Buffer b(ctx, big * 4);
+  std::vector<std::uint32_t> v(big), w(big, 0);
+  std::iota(v.begin(), v.end(), 5u);
+  b.write(v.data(), big * 4);
+  b.read_later(w.data(), big * 4);
+  ctx.finish();
+  EXPECT_EQ(w, v);
+}
+
+TEST(Buffer, SeparateMemoryPinnedTransfers) {
+  check_pinned_transfers(true);
+}
+
+TEST(Buffer, SeparateMemoryPageableTransfers) {
+  check_pinned_transfers(false);
+}

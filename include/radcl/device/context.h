@@ -43,7 +43,16 @@ public:
   // A copy of `bytes` at `src` that stays valid until the queue drains (finish, or a blocking
   // read): the source of a transfer enqueued without waiting.
   const void* stage(const void* src, std::size_t bytes);
-  // Every command enqueued so far has completed: the staged copies may go.
+  // On a device with its own memory, room for a small transfer in pinned host memory, valid
+  // until the queue drains; nullptr where there is none (large transfers, zero-copy devices).
+  // NVIDIA's driver makes a transfer from or to pageable memory wait; from pinned memory it
+  // does not, so a wave's reads and writes share one wait (docs/device.md).
+  void* pinned(std::size_t bytes);
+  bool pins() const { return use_pinned_; }
+  // Copies `bytes` from `from` (pinned room a read is filling) to `to` once the queue drains.
+  void copy_when_drained(const void* from, void* to, std::size_t bytes);
+  // Every command enqueued so far has completed: reads into pinned room reach their
+  // destinations, and the staged copies and pinned room may go.
   void drained();
 
   _cl_context* handle() const { return context_; }
@@ -58,6 +67,23 @@ private:
   bool pending_ = false;  // a kernel was enqueued since the last finish
   // Copies behind transfers still in flight; blocks are kept for reuse once drained.
   std::vector<std::vector<char>> staged_, spare_;
+  // Pinned host memory: mapped CL_MEM_ALLOC_HOST_PTR buffers, used from the front between
+  // drains. RADCL_PINNED=0 turns it off (to measure it).
+  struct PinnedBlock {
+    void* mem; // cl_mem
+    char* host;
+    std::size_t size, used;
+  };
+  bool use_pinned_ = false;
+  std::vector<PinnedBlock> pinned_;
+  std::size_t pin_block_ = 0;
+  struct CopyBack {
+    const void* from;
+    void* to;
+    std::size_t bytes;
+  };
+  std::vector<CopyBack> copy_back_;
+  void release_pinned();
 };
 
 // The device chosen by RADCL_DEVICE (see select_device), shared by the whole process.
