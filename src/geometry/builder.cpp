@@ -2,6 +2,7 @@
 // instanced octree and mesh as a prototype placed by an Embree instance. Nested instances are
 // flattened (this Embree supports one instance level) by composing their transforms.
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <string>
@@ -209,9 +210,22 @@ private:
   }
 
   void attach_instances() {
+    const double diag = length(sub(g_.world_bounds[1], g_.world_bounds[0]));
     for (std::size_t i = 1; i < g_.records.size(); ++i) {
       const PlacementRecord& r = g_.records[i];
       const Prototype& p = g_.prototypes[r.prototype];
+      // Embree carries a ray into an instance in float, divided by its scale: past about 1e18
+      // (1.8e18 is its limit) the ray is invalid and Embree's assertion ends the program. An
+      // instance so small against the scene cannot be traced at all (Radiance, in double, would
+      // trace it): a clear error instead.
+      const Placement& pl = g_.placements[i];
+      if (diag / pl.scale > 1e16) {
+        const scene::Object& o = in_.main.objects[pl.instance_object];
+        char size[64];
+        std::snprintf(size, sizeof size, "%g in a scene %g across", pl.scale, diag);
+        throw FatalError("bad transform for " + std::string(scene::type_name(o.type)) + " \"" +
+                         o.name + "\": a scale of " + size + " is too small to trace");
+      }
       // Prototype-centred -> world-centred, as Embree's column-major 3x4 (columns are the
       // images of the axes: the rows of the row-vector matrix).
       const Affine m = Affine::translation(p.centre)

@@ -95,6 +95,7 @@ struct RayContext {
   const SceneGeometry::Impl* impl = nullptr;
   Vec3 org{}, dir{}; // world, dir unit
   double tmin = 0, tmax = 0;
+  double shift = 0; // a far origin moved this far along the ray to the scene (setup in query)
   // An origin this close (world distance) to a surface lies on it (float rounding of the point
   // the ray leaves): that surface is not met again at the origin (intersect_analytic).
   double on = 0;

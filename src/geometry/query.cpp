@@ -15,15 +15,38 @@ namespace radcl::geometry {
 namespace {
 
 bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, double tmin, double tmax,
-           RayContext& rc, RTCRay& ray) {
+           bool free_origin, RayContext& rc, RTCRay& ray) {
   rtcInitIntersectContext(&rc.ctx);
   rc.impl = &g;
   const double l = length(dir);
   if (!(l > 0) || !std::isfinite(l)) return false;
   rc.org = org;
   rc.dir = scale(dir, 1 / l);
-  const Vec3 o = sub(org, g.centre);
-  const double reach = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
+  Vec3 o = sub(org, g.centre);
+  double reach = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
+  if (!std::isfinite(reach)) return false;
+  // An origin far outside the scene (a view point 1e19 away) starts the float traversal where
+  // the ray meets the scene's bounding sphere, found in double as Radiance traces: Embree rejects
+  // coordinates past 1.8e18 (its assertion ends the program) and rounds a scene to nothing
+  // long before that. Distances stay measured from the caller's origin.
+  const double radius = 0.5 * length(sub(g.world_bounds[1], g.world_bounds[0])) + g.margin;
+  if (reach > std::min(1e4 * radius + 1.0, 1e15)) {
+    const double along = -dot(o, rc.dir);
+    const Vec3 nearest = madd(o, rc.dir, along);
+    if (!(length(nearest) <= radius) || along < 0) return false; // passes the scene by
+    // Short of the sphere by the rounding of `along`: a shift that overshot into the scene
+    // would start the ray inside it; one too short to reach it is a miss below.
+    const double slop = 4 * reach * std::numeric_limits<double>::epsilon();
+    rc.shift = std::max(0.0, along - radius - slop);
+    o = madd(o, rc.dir, rc.shift);
+    reach = std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])});
+    // The entry point is as exact as double places it (Radiance's own limit); one that float
+    // still cannot hold (an origin 1e300 away) is a miss.
+    if (!(reach <= radius + 2 * slop + 1.0) || !(reach < 1e17)) return false;
+    rc.org = add(g.centre, o);
+    tmin = tmin < 0 ? tmin : std::max(0.0, tmin - rc.shift);
+    tmax -= rc.shift;
+  }
   if (tmin < 0) {
     // The origin was moved off the surface it leaves (RC_TMIN_OFF): nothing is skipped, and no
     // surface counts as holding the origin.
@@ -32,8 +55,9 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
   } else {
     rc.tmin = std::max(tmin, std::max(g.eps, g.eps_rel * reach));
     // Points handed over in float relative to the centre are off their surface by up to three
-    // half units in the last place of their largest coordinate.
-    rc.on = 4e-7 * reach + 1e-12;
+    // half units in the last place of their largest coordinate. A meter holds no surface: a
+    // fin 0.5 mm from one 4 km out (1.6 mm of rounding there) is in its view.
+    rc.on = free_origin ? 0.0 : 4e-7 * reach + 1e-12;
   }
   rc.tmax = tmax;
   if (!(rc.tmax > rc.tmin)) return false;
@@ -57,11 +81,11 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
 } // namespace
 
 std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, double tmin,
-                                            double tmax) const {
+                                            double tmax, bool free_origin) const {
   const Impl& g = *impl_;
   RayContext rc;
   RTCRayHit rh;
-  if (!setup(g, org, dir, tmin, tmax, rc, rh.ray)) return std::nullopt;
+  if (!setup(g, org, dir, tmin, tmax, free_origin, rc, rh.ray)) return std::nullopt;
   rc.closest = true;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -96,16 +120,18 @@ std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, 
     }
   }
   h.point = madd(rc.org, rc.dir, h.t);
+  h.t += rc.shift;
   h.normal = normalized(rec.to_world.vector(n));
   h.front = dot(h.normal, rc.dir) < 0;
   return h;
 }
 
-bool SceneGeometry::occluded(const Vec3d& org, const Vec3d& dir, double tmin, double tmax) const {
+bool SceneGeometry::occluded(const Vec3d& org, const Vec3d& dir, double tmin, double tmax,
+                             bool free_origin) const {
   const Impl& g = *impl_;
   RayContext rc;
   RTCRay ray;
-  if (!setup(g, org, dir, tmin, tmax, rc, ray)) return false;
+  if (!setup(g, org, dir, tmin, tmax, free_origin, rc, ray)) return false;
   rtcOccluded1(g.top, &rc.ctx, &ray);
   return ray.tfar < 0;
 }
@@ -114,7 +140,8 @@ void SceneGeometry::intersect(std::span<const Ray> rays, std::span<std::optional
   if (hits.size() != rays.size()) throw std::invalid_argument("intersect: size mismatch");
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 64), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
-      hits[i] = intersect(rays[i].org, rays[i].dir, rays[i].tmin, rays[i].tmax);
+      hits[i] =
+          intersect(rays[i].org, rays[i].dir, rays[i].tmin, rays[i].tmax, rays[i].free_origin);
   });
 }
 
@@ -122,7 +149,9 @@ void SceneGeometry::occluded(std::span<const Ray> rays, std::span<std::uint8_t> 
   if (blocked.size() != rays.size()) throw std::invalid_argument("occluded: size mismatch");
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 64), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
-      blocked[i] = occluded(rays[i].org, rays[i].dir, rays[i].tmin, rays[i].tmax) ? 1 : 0;
+      blocked[i] =
+          occluded(rays[i].org, rays[i].dir, rays[i].tmin, rays[i].tmax, rays[i].free_origin) ? 1
+                                                                                              : 0;
   });
 }
 

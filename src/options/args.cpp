@@ -3,6 +3,7 @@
 #include "radcl/util/error.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -154,7 +155,8 @@ bool ArgList::values_ok(std::size_t i, std::string_view types) const {
       if (!is_int(w, true)) return false;
       break;
     case 'f':
-      if (!is_real(w, true)) return false;
+      // Radiance's atof turns "1e999" into Inf; no option means anything with it.
+      if (!is_real(w, true) || !std::isfinite(std::atof(w.c_str()))) return false;
       break;
     default:
       return false;

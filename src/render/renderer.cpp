@@ -1367,6 +1367,8 @@ struct Renderer::Impl {
       rays[i].org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
       rays[i].dir = {r.dir.x, r.dir.y, r.dir.z};
       rays[i].tmin = r.org.w;
+      // The kernels send a positive tmin only from an -I meter's point (rc_leave_org).
+      rays[i].free_origin = r.org.w > 0 && !primaries;
       rays[i].tmax = std::isfinite(r.dir.w) ? r.dir.w : 1e300;
     });
     std::vector<std::optional<geometry::Hit>> gh(n);
@@ -1452,6 +1454,7 @@ struct Renderer::Impl {
         rays[i].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
         rays[i].dir = {s.dir.x, s.dir.y, s.dir.z};
         rays[i].tmin = s.org.w;
+        rays[i].free_origin = s.org.w > 0; // from an -I meter's point (rc_leave_org)
         rays[i].tmax =
             src.kind == RC_SRC_DISTANT || !std::isfinite(s.dir.w) ? 1e300 : s.dir.w * 1.001 + 1e-3;
       });

@@ -56,6 +56,8 @@ std::size_t transform_prefix(const std::vector<std::string>& args, std::size_t f
     for (std::size_t k = 1; k <= n; ++k) {
       const std::string& w = args[i + k];
       if (integer ? !detail::is_int_word(w, true) : !detail::is_real_word(w, true)) return false;
+      // A real that overflows ("1e999") would put Inf into the matrix, as xform's atof does.
+      if (!integer && !std::isfinite(detail::real_value(w))) return false;
     }
     return true;
   };
@@ -113,6 +115,16 @@ std::size_t transform_prefix(const std::vector<std::string>& args, std::size_t f
   }
   flush();
   out.scale = std::fabs(out.scale);
+  // Products that overflow or underflow (-s 1e300 -s 1e300, a huge -i count) make no transform:
+  // nothing is consumed, so the caller reports a bad transform.
+  bool finite = std::isfinite(out.scale) && out.scale > 0;
+  for (const auto& row : out.m)
+    for (double x : row)
+      finite = finite && std::isfinite(x);
+  if (!finite) {
+    out = Transform{};
+    return first;
+  }
   return i;
 }
 

@@ -2,6 +2,7 @@
 // not finite are fatal; rays holding one get an all-zero record (Radiance traces them to
 // undefined results, and a NaN direction ends its input); nothing non-finite is ever written.
 // Denormals are ordinary numbers.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -241,4 +242,100 @@ TEST(StabilityBadNumbers, SceneDenormalsWork) {
   EXPECT_GT(zero[0], 0);
   for (int k = 0; k < 3; ++k)
     EXPECT_NEAR(denorm[k], zero[k], 1e-6 * zero[k]);
+}
+
+// Option values that overflow to Inf ("1e999", which Radiance's atof takes) are command line
+// errors, as "nan" and "inf" words are: an ambient value or a view point of Inf would reach
+// every output.
+TEST(StabilityBadNumbers, OverflowingOptionValuesAreCommandLineErrors) {
+  for (const std::string opt : {"-av 1e999 1 1", "-lw 1e999", "-dj -1e400"}) {
+    Result r = rtrace("-ab 1 " + opt, "luminaires.oct", "2 2 0.5 0 0 1\n");
+    EXPECT_NE(r.rc, 0) << opt;
+    EXPECT_NE(r.log.find("rtrace: fatal - command line error at '" + opt.substr(0, 3) + "'"),
+              std::string::npos)
+        << r.log;
+    EXPECT_EQ(r.out, "") << opt;
+  }
+  fs::path pic = temp("view.hdr"), err = temp("view.err");
+  for (const std::string view : {"-vp 1e999 0 0", "-vd 1e999 0 0", "-vu 0 0 -1e999", "-vs 1e999"}) {
+    int rc = run_command("(cd " + radcl::test::data("scenes") + " && " + radcl::test::bin_dir() +
+                         "/rpict -x 8 -y 8 -ab 0 -vf luminaires.vf " + view + " luminaires.oct > " +
+                         pic.string() + " 2> " + err.string() + ")");
+    EXPECT_NE(rc, 0) << view;
+    EXPECT_NE(
+        read_file(err).find("rpict: fatal - command line error at '" + view.substr(0, 3) + "'"),
+        std::string::npos)
+        << view << ": " << read_file(err);
+  }
+  fs::remove(pic);
+  fs::remove(err);
+}
+
+// Instance and mesh transforms: a number that overflows, or a product that does (-s 1e300
+// -s 1e300), is a bad transform as "nan" is. A scale that puts the scene's rays past what the
+// float traversal holds inside the instance (Embree's limit is 1.8e18; its assertion ended the
+// program) is a bad transform too, with the reason; ordinary small scales work. (The grey
+// modifier shows the mesh, whose own materials this scene lacks.)
+TEST(StabilityBadNumbers, NonFiniteAndUntraceableTransformsAreFatal) {
+  const std::string chair = radcl::test::data("scenes") + "/chair.oct";
+  const std::string mesh = radcl::test::data("scenes") + "/octa.rtm";
+  auto run = [&](const std::string& type, const std::string& file, const std::string& xf) {
+    fs::path rad = temp("xf.rad");
+    const int n = 1 + static_cast<int>(std::count(xf.begin(), xf.end(), ' ')) + 1;
+    write_file(rad, std::string(kRoom) + "grey " + type + " c " + std::to_string(n) + " " + file +
+                        " " + xf + "\n0\n0\n");
+    Result r = rtrace("-ab 0 -ov", rad.string(), "0 -5 0.5 0 1 0\n");
+    fs::remove(rad);
+    return r;
+  };
+  for (const std::string& type : {std::string("instance"), std::string("mesh")}) {
+    const std::string& file = type == "instance" ? chair : mesh;
+    for (const char* xf : {"-s 1e999", "-t 1e999 0 0", "-rx -1e999", "-s 1e300 -s 1e300",
+                           "-s 1e-200 -s 1e-200", "-s 1e-30", "-s 1e-320"}) {
+      Result r = run(type, file, xf);
+      EXPECT_NE(r.rc, 0) << type << " " << xf;
+      EXPECT_NE(r.log.find("rtrace: fatal - "), std::string::npos) << r.log;
+      EXPECT_NE(r.log.find("bad transform for " + type + " \"c\""), std::string::npos)
+          << type << " " << xf << ": " << r.log;
+      EXPECT_EQ(r.out, "") << type << " " << xf;
+    }
+    for (const char* xf : {"-s 1e-6", "-s 1e6 -t 0 1e7 0"}) {
+      Result r = run(type, file, xf);
+      EXPECT_EQ(r.rc, 0) << type << " " << xf << ": " << r.log;
+      auto v = words(r.out);
+      ASSERT_EQ(v.size(), 3u) << r.out;
+      expect_finite(v, type + " " + xf);
+    }
+  }
+}
+
+// Ray origins far outside the scene start the traversal where the ray meets the scene's
+// bounding sphere: a view 1e12 away hits a 1 m ball at the right distance with the value a
+// near ray gets; origins 1e19 and 1e30 away stay finite (Embree's float traversal had ended the
+// program past 1.8e18), one 1e300 away, which double cannot bring to the scene, misses.
+TEST(StabilityBadNumbers, FarRayOriginsStayFinite) {
+  fs::path rad = temp("far.rad");
+  write_file(rad, "void light lamp 0 0 3 10 10 10\n"
+                  "lamp sphere bulb 0 0 4 0 -3 3 0.2\n"
+                  "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                  "grey sphere ball 0 0 4 0 0 0 1\n");
+  std::string in;
+  for (const char* d : {"5", "1e6", "1e12", "1e15", "1e19", "1e30", "1e300"})
+    in += std::string("0 -") + d + " 0 0 1 0\n";
+  Result r = rtrace("-ab 0 -ovl", rad.string(), in);
+  fs::remove(rad);
+  EXPECT_EQ(r.rc, 0) << r.log;
+  auto v = words(r.out);
+  ASSERT_EQ(v.size(), 7u * 4) << r.out;
+  expect_finite(v, "far origins");
+  const double near = v[0];
+  EXPECT_GT(near, 0);
+  EXPECT_NEAR(v[3], 4, 1e-6);
+  const double dist[] = {5, 1e6, 1e12, 1e15};
+  for (int i = 1; i < 4; ++i) {
+    EXPECT_NEAR(v[4 * i], near, 1e-5 * near) << dist[i];
+    EXPECT_NEAR(v[4 * i + 3], dist[i] - 1, 1e-6 * dist[i]) << dist[i];
+  }
+  // 1e19 and 1e30: as exact as double places the entry point, hit or miss; 1e300: beyond.
+  EXPECT_EQ(v[4 * 6], 0.0);
 }

@@ -323,10 +323,10 @@ TEST_F(StabilityDegenerate, FarDetailOnHugeGround) {
   EXPECT_NEAR(e[2], full, 1e-5 * full); // the sunny side
 }
 
-// Known gap: closer than rc_leave's distance the fin is skipped and the ground reads the full
-// sun (measured: lit at 0.5, 1 and 2 mm, shaded from 3 mm). Radiance, in double with FTINY,
-// shades them. Needs the ray's origin surface on the device (docs/stability.md).
-TEST_F(StabilityDegenerate, DISABLED_FarDetailWithinFloatResolution) {
+// Closer than the float rounding of the meter's point (1.6 mm here) the fin was taken for the
+// surface the meter's rays leave and the ground read the full sun at 0.5, 1 and 2 mm. A meter
+// lies on no surface (geometry::Ray::free_origin), so Radiance's shadows hold, as in double.
+TEST_F(StabilityDegenerate, FarDetailWithinFloatResolution) {
   double full = 0;
   auto e = far_fin_irradiance({0.0005, 0.001, 0.002}, full);
   for (double v : e)

@@ -37,6 +37,9 @@ struct Ray {
   Vec3d dir{}; // need not be unit; it is normalised
   double tmin = 0;
   double tmax = 1e300;
+  // The origin is a point placed off every surface (an -I meter's): tmin still holds, but no
+  // surface passing within the origin's float rounding is taken to be the one it leaves.
+  bool free_origin = false;
 };
 
 // Where a hit's surface comes from. Placement 0 is the main scene; every further one is an
@@ -98,11 +101,12 @@ public:
   SceneGeometry& operator=(SceneGeometry&&) noexcept;
 
   // Nearest hit with tmin < t <= tmax (world distances; t > epsilon() unless tmin < 0, which
-  // says the origin is off every surface: then any t > 0).
+  // says the origin is off every surface: then any t > 0). free_origin: as in Ray.
   std::optional<Hit> intersect(const Vec3d& org, const Vec3d& dir, double tmin = 0,
-                               double tmax = 1e300) const;
+                               double tmax = 1e300, bool free_origin = false) const;
   // Whether anything lies in (tmin, tmax).
-  bool occluded(const Vec3d& org, const Vec3d& dir, double tmin = 0, double tmax = 1e300) const;
+  bool occluded(const Vec3d& org, const Vec3d& dir, double tmin = 0, double tmax = 1e300,
+                bool free_origin = false) const;
 
   // Waves of rays, in parallel over the host cores. Output spans must match the input size.
   void intersect(std::span<const Ray> rays, std::span<std::optional<Hit>> hits) const;

@@ -19,7 +19,8 @@ struct Transform {
 };
 
 // Radiance's xf(): parses the longest valid transform starting at args[first] into `out` and
-// returns the index of the first word not used (args.size() when all were used).
+// returns the index of the first word not used (args.size() when all were used). A transform
+// whose numbers or products are not finite (or whose scale underflows to 0) uses nothing.
 std::size_t transform_prefix(const std::vector<std::string>& args, std::size_t first,
                              Transform& out);
 
