@@ -207,6 +207,8 @@ private:
       g_.eps_rel = 1e-7;
     }
     g_.margin = 1e-5 * diag + 1e-30;
+    g_.radius = 0.5 * diag + g_.margin;
+    g_.far = std::min(1e4 * g_.radius + 1.0, 1e15);
   }
 
   void attach_instances() {

@@ -77,6 +77,8 @@ struct SceneGeometry::Impl {
   double eps = 1e-6;    // nearest hit a query accepts, at least
   double eps_rel = 0;   // and this times the ray origin's largest centred coordinate
   double margin = 1e-6; // slack for Embree's float distances
+  double radius = 0;    // of the bounding sphere about the centre, margin included
+  double far = 0;       // origins farther (largest centred coordinate) start at that sphere
   SurfaceCounts counts;
   std::vector<DistantSource> sources;
   std::vector<std::shared_ptr<const void>> keep_alive; // placed octrees and meshes

@@ -29,8 +29,8 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
   // the ray meets the scene's bounding sphere, found in double as Radiance traces: Embree rejects
   // coordinates past 1.8e18 (its assertion ends the program) and rounds a scene to nothing
   // long before that. Distances stay measured from the caller's origin.
-  const double radius = 0.5 * length(sub(g.world_bounds[1], g.world_bounds[0])) + g.margin;
-  if (reach > std::min(1e4 * radius + 1.0, 1e15)) {
+  if (reach > g.far) {
+    const double radius = g.radius;
     const double along = -dot(o, rc.dir);
     const Vec3 nearest = madd(o, rc.dir, along);
     if (!(length(nearest) <= radius) || along < 0) return false; // passes the scene by

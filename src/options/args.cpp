@@ -82,6 +82,10 @@ bool is_real(std::string_view s, bool allow_trailing_space) {
   return ends_ok(s, skip_real(s, 0), allow_trailing_space);
 }
 
+bool is_finite_real(std::string_view s, bool allow_trailing_space) {
+  return is_real(s, allow_trailing_space) && std::isfinite(std::atof(std::string(s).c_str()));
+}
+
 std::vector<std::string> split_words(std::string_view text) {
   std::vector<std::string> words;
   std::size_t p = 0;
@@ -155,8 +159,7 @@ bool ArgList::values_ok(std::size_t i, std::string_view types) const {
       if (!is_int(w, true)) return false;
       break;
     case 'f':
-      // Radiance's atof turns "1e999" into Inf; no option means anything with it.
-      if (!is_real(w, true) || !std::isfinite(std::atof(w.c_str()))) return false;
+      if (!is_finite_real(w, true)) return false;
       break;
     default:
       return false;

@@ -28,7 +28,7 @@ int view_option(View& v, int ac, const char* const* av) {
     if (av[0][pos] && !space(av[0][pos])) return false;
     if (ac - 1 < nreal) return false;
     for (int k = 1; k <= nreal; ++k)
-      if (!is_real(std::string_view(av[k]), true) || !std::isfinite(std::atof(av[k]))) return false;
+      if (!is_finite_real(av[k], true)) return false;
     return true;
   };
   auto vec = [&](Vec3& out) {

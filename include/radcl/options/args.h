@@ -15,6 +15,9 @@ namespace radcl::options {
 // `allow_trailing_space`) at whitespace, as Radiance's option checks allow.
 bool is_int(std::string_view s, bool allow_trailing_space = false);
 bool is_real(std::string_view s, bool allow_trailing_space = false);
+// is_real, and its value does not overflow (Radiance's atof turns "1e999" into Inf; no option
+// means anything with it).
+bool is_finite_real(std::string_view s, bool allow_trailing_space = false);
 
 // Splits on whitespace (space, tab, newline, CR, FF, VT); no quoting, no comments.
 std::vector<std::string> split_words(std::string_view text);
