@@ -1,4 +1,5 @@
 #include "radcl/render/renderer.h"
+#include "radcl/render/irradiance_meter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -827,15 +828,6 @@ struct Renderer::Impl {
     return id_slot.empty() ? primary - batch_first : id_slot.at(primary);
   }
 
-  // How far along its direction an -I meter at world point p sits in front of it: Radiance's
-  // fixed 1e-4, but at least four float steps of the re-centred point (in mm, 5 m from the
-  // centre, 1e-4 is below them: 2% off); docs/departures.md.
-  double meter_offset(const Vec3d& p) const {
-    const double far = std::max(
-        {std::fabs(p[0] - centre[0]), std::fabs(p[1] - centre[1]), std::fabs(p[2] - centre[2])});
-    return std::isfinite(far) ? std::max(1e-4, 5e-7 * far) : 1e-4;
-  }
-
   void render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
                     std::size_t first_index) {
     std::optional<Timed> timed(std::in_place, prof, Phase::Batch);
@@ -888,9 +880,7 @@ struct Renderer::Impl {
       hits.resize(prim.size());
       for (std::size_t i = 0; i < prim.size(); ++i) {
         Vec3d d = unit(prim[i].dir);
-        const double off = meter_offset(prim[i].org);
-        Vec3d p = {prim[i].org[0] + off * d[0], prim[i].org[1] + off * d[1],
-                   prim[i].org[2] + off * d[2]};
+        const Vec3d p = meter_point(geom, prim[i].org, d);
         rc_hit& h = hits[i];
         h = rc_hit{};
         h.pos = f4(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2], 1e-5);

@@ -241,11 +241,10 @@ TEST_F(StabilityTranslation, AmbientNoCacheMillimetreSensors) {
   expect_same({{1e3, 0}}, kNoCache, 0.005);
 }
 
-// Known gap: in km Radiance's fixed 1e-4 is 0.1 m above a 0.8 mm workplane (max 23%, RMS
-// 5.4%). An offset relative to the model's size passes (session 6: 1e-6 of it) but moves the
-// meters of every model under 100 units away from Radiance's, which exactness tests of small
-// scenes assert: a 20 cm lamp in metres is as small as this office in km (docs/stability.md).
-TEST_F(StabilityTranslation, DISABLED_AmbientNoCacheKilometreSensors) {
+// In km Radiance's fixed 1e-4 is 0.1 m above a 0.8 mm workplane (max 23%, RMS 5.4%); the
+// meter now sits 1e-6 of the model's size out in models under 100 units across
+// (render/irradiance_meter.h).
+TEST_F(StabilityTranslation, AmbientNoCacheKilometreSensors) {
   expect_same({{1e-3, 0}}, kNoCache, 0.005);
 }
 

@@ -11,6 +11,7 @@
 #include "radcl/device/context.h"
 #include "radcl/geometry/scene_geometry.h"
 #include "radcl/render/compiled_scene.h"
+#include "radcl/render/irradiance_meter.h"
 #include "radcl/render/renderer.h"
 #include "radcl/util/error.h"
 
@@ -74,6 +75,11 @@ struct Scene {
       out.push_back(x.value[1]);
     return out;
   }
+  // Where an -I sensor along r measures in this scene.
+  render::Vec3d meter(const render::PrimaryRay& r) {
+    geometry::SceneGeometry geom(scene::load_scene({path}));
+    return render::meter_point(geom, r.org, r.dir);
+  }
   // Compiles only (no device program): for the argument checks.
   render::CompiledScene compile() {
     scene::LoadedScene ls = scene::load_scene({path});
@@ -129,8 +135,12 @@ TEST(Antimatter, ShadowRaysReachThePointBehindTheWallOnlyThroughTheHole) {
   Scene holed(wall_with_hole(1));
   std::vector<render::PrimaryRay> sensors = {{{0, 0, 0.2}, {0, 0, 1}, 0},
                                              {{2, 0, 0.2}, {0, 0, 1}, 0}};
-  auto e_open = open.values(sensors, true);
   auto e = holed.values(sensors, true);
+  // The meters must measure at the same points: their offset grows with a small scene's size.
+  std::vector<render::PrimaryRay> open_sensors = sensors;
+  for (std::size_t i = 0; i < sensors.size(); ++i)
+    open_sensors[i].org[2] += holed.meter(sensors[i])[2] - open.meter(sensors[i])[2];
+  auto e_open = open.values(open_sensors, true);
   // Irradiance from a 2 x 2 square of radiance L, 4.8 above and centred: four corner
   // rectangles 1 x 1 (Radiance's source sampling is within a percent of it).
   double X = 1 / 4.8, a = X / std::sqrt(1 + X * X);

@@ -163,7 +163,8 @@ TEST_F(StabilityExtremeSources, FaintLightIsNoSource) {
   // Just above FTINY it is a source, with the exact irradiance.
   const std::string lit = "void light faint 0 0 3 2e-6 2e-6 2e-6\nfaint sphere f 0 0 4 0 0 1 0.1\n";
   auto l = render(lit, {sensors[0]}, direct(true));
-  const double e0 = kPi * 2e-6 * 0.01 / ((1 - 1e-4) * (1 - 1e-4));
+  const double d0 = 1 - meter_points("s.rad", {sensors[0]})[0][2]; // the meter to the centre
+  const double e0 = kPi * 2e-6 * 0.01 / (d0 * d0);
   EXPECT_NEAR(l[0].value[0], e0, 1e-5 * e0);
 }
 
@@ -187,8 +188,9 @@ TEST_F(StabilityExtremeSources, LightEnclosedInOpaqueBox) {
       {{1.5, 0.5, 1}, {-1, 0, 0}, 0}, // facing the box
       {{1, 0, 1}, {-1, 0, 0}, 0},     // on the inside of the wall, facing the lamp
   };
-  const double e_in = kPi * 1000 * 0.04 / ((1 - 1e-4) * (1 - 1e-4));
   auto d = render(text, rays, direct(true));
+  const double d_in = meter_points("s.rad", rays)[4][0]; // the meter to the lamp's centre
+  const double e_in = kPi * 1000 * 0.04 / (d_in * d_in);
   for (int i = 0; i < 4; ++i)
     EXPECT_EQ(d[i].value[0], 0) << i;
   EXPECT_NEAR(d[4].value[0], e_in, 1e-5 * e_in);
@@ -215,8 +217,9 @@ TEST_F(StabilityExtremeSources, NarrowSpotlight) {
   for (double a : angles)
     rays.push_back({{(h - 1e-4) * std::tan(a * kPi / 180), 0, 0}, {0, 0, 1}, 0});
   auto res = render(text, rays, direct(true));
+  const std::vector<render::Vec3d> meters = meter_points("s.rad", rays);
   for (std::size_t i = 0; i < angles.size(); ++i) {
-    const double x = rays[i].org[0], dz = h - 1e-4;
+    const double x = meters[i][0], dz = h - meters[i][2];
     const double d2 = x * x + dz * dz, d = std::sqrt(d2);
     const double want =
         angles[i] < 0.25 ? kPi * L * r * r / d2 * (dz / d) * d2 / ((d + f) * (d + f)) : 0;

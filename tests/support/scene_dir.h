@@ -3,6 +3,7 @@
 // and a render of primary rays through a scene file there.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <string>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "radcl/device/context.h"
+#include "radcl/render/irradiance_meter.h"
 #include "radcl/render/renderer.h"
 #include "radcl/scene/loader.h"
 
@@ -52,6 +54,19 @@ protected:
     std::vector<render::PrimaryResult> res(rays.size());
     r.render(rays, res);
     return res;
+  }
+
+  // Where -I meters along `rays` measure in scene file `file` (render/irradiance_meter.h).
+  static std::vector<render::Vec3d> meter_points(const std::string& file,
+                                                 const std::vector<render::PrimaryRay>& rays) {
+    scene::LoadedScene ls = scene::load_scene({file});
+    geometry::SceneGeometry g(ls);
+    std::vector<render::Vec3d> p;
+    for (const render::PrimaryRay& r : rays) {
+      const double n = std::sqrt(r.dir[0] * r.dir[0] + r.dir[1] * r.dir[1] + r.dir[2] * r.dir[2]);
+      p.push_back(render::meter_point(g, r.org, {r.dir[0] / n, r.dir[1] / n, r.dir[2] / n}));
+    }
+    return p;
   }
 
 private:
