@@ -248,18 +248,28 @@ TEST_F(StabilityTranslation, AmbientNoCacheKilometreSensors) {
   expect_same({{1e-3, 0}}, kNoCache, 0.005);
 }
 
-// Known gap, not a defect of the port: Radiance's record radii, (4/lambda)^(1/4) of the
-// Hessian's eigenvalues, are not free of units (they grow as the square root of the scene's
-// size), and its rules hold fixed distances (the behind test's and the corral's 0.001, 1 m in
-// km), so a model in other units gets another cache: in mm fewer, relatively larger records
-// (111 instead of 356 here). Measured vs the metre office: mm mean +4.5%, RMS 15%; km mean
-// +5.6%, RMS 9% (+17%, 21% with the km meter 0.7 mm up instead of 0.1 m); two seeds of the metre
-// office differ by 2.9% RMS, 0.4% in the mean.
-TEST_F(StabilityTranslation, DISABLED_AmbientCacheScaledWithinNoise) {
+// The cache in mm: Radiance's record radii, (4/lambda)^(1/4) of the Hessian's eigenvalues,
+// grow as the square root of the model's size, so in mm they fall under -ar's minimum radius,
+// which is relative: the cache stays the metre office's within noise (measured: mean +0.02%,
+// RMS 2.0%; two seeds of the metre office differ by 2.9% RMS, 0.4% in the mean).
+TEST_F(StabilityTranslation, AmbientCacheMillimetreWithinNoise) {
   std::vector<double> base = sensors({}, kCache);
-  for (const Xform& x : kScales) {
-    Diff d = compare(base, sensors(x, kCache));
-    EXPECT_LE(std::fabs(d.mean), 0.02) << x.name();
-    EXPECT_LE(d.rms, 0.06) << x.name();
-  }
+  Diff d = compare(base, sensors({1e3, 0}, kCache));
+  EXPECT_LE(std::fabs(d.mean), 0.02);
+  EXPECT_LE(d.rms, 0.06);
+}
+
+// Known gap: in km the same radii are 31.6 times larger against the model and reach -ar's
+// maximum (0.2 of the cube): few, large records (measured: mean +18%, RMS 23%). Radii in the
+// model's own unit pass (session 16: radii times sqrt(u) and the behind test's, the corral's
+// and the sample cap's fixed lengths times u, with u = 1e-3: mean 0.00%, RMS 0.06%; u = 0.0017
+// still passes, 0.017 does not), but the only length a scene offers is its size, and taking u
+// from it (u = size / 100) slows every small model in metres by 2-4x for no accuracy (the
+// luminaires room, 10 m across: 26.9 s instead of 7.5 s, mean error against the converged
+// answer 1.22% instead of 1.23%). docs/stability.md.
+TEST_F(StabilityTranslation, DISABLED_AmbientCacheKilometreWithinNoise) {
+  std::vector<double> base = sensors({}, kCache);
+  Diff d = compare(base, sensors({1e-3, 0}, kCache));
+  EXPECT_LE(std::fabs(d.mean), 0.02);
+  EXPECT_LE(d.rms, 0.06);
 }
