@@ -27,20 +27,38 @@ export OCL_ICD_VENDORS=/tmp/vendors LD_LIBRARY_PATH=$b/lib POCL_CACHE_DIR=/tmp/p
 mkdir -p "$b/build" && ln -sfn "$b/bin" "$b/build/bin"
 [ -x "$b/radiance/rtrace" ] && [ -z "${NO_RADIANCE:-}" ] && export RADIANCE_BIN=$b/radiance RAYPATH=.:$b/radiance
 
-tests() { # the stability suite, then the rest, each executable under a time limit
-  local t s=0 f=0
-  local rc t0 list=${TESTS:-$(ls "$b"/bin/test_*stability* "$b"/bin/test_render_ambient_leaks
+tests() { # the stability suite, then the rest, each executable under a time limit; TEST_JOBS
+  # processes at once (NVIDIA's compiles of each scene's program are CPU-bound: they overlap),
+  # each executable split into TEST_SHARDS gtest shards
+  local t n=0 list=${TESTS:-$(ls "$b"/bin/test_*stability* "$b"/bin/test_render_ambient_leaks
     ls "$b"/bin/test_* | grep -v stability | grep -v ambient_leaks)}
+  mkdir -p "$out/logs"
+  local k shards=${TEST_SHARDS:-1}
   for t in $list; do
-    t=$b/bin/$(basename "$t") t0=$(date +%s)
-    timeout "${TEST_LIMIT:-120}" "$t" --gtest_brief=1 > "$out/t.log" 2>&1
-    rc=$?
-    echo "$(basename "$t") rc=$rc $(($(date +%s) - t0)) s" >> "$out/times.txt"
-    if [ $rc = 0 ]; then s=$((s + 1))
-    else f=$((f + 1)); echo "== $(basename "$t") rc=$rc"; grep -E "FAILED|Failure|rror" "$out/t.log" | head -20; fi
-    grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/t.log" | sed "s|^|$(basename "$t"): |" >> "$out/tests.txt"
+    for ((k = 0; k < shards; ++k)); do
+      # shellcheck disable=SC2046 # no shard suffix when there is one shard
+      GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$k one "$(basename "$t")" $( ((shards > 1)) && echo $k) &
+      n=$((n + 1))
+      [ $((n % ${TEST_JOBS:-1})) = 0 ] && wait
+    done
+  done
+  wait
+  local s f
+  s=$(grep -c " rc=0 " "$out/times.txt") f=$(grep -vc " rc=0 " "$out/times.txt")
+  for t in $(grep -v " rc=0 " "$out/times.txt" | cut -d' ' -f1); do
+    echo "== $(grep "^$t " "$out/times.txt")"
+    grep -E "FAILED|Failure|rror" "$out/logs/$t.log" | head -20
   done
   echo "test executables: $s passed, $f failed"
+}
+
+one() { # one test executable (gtest shard $2) under the time limit: its log, time and results
+  local t=$1${2:+.$2} rc t0
+  t0=$(date +%s)
+  timeout "${TEST_LIMIT:-120}" "$b/bin/$1" ${GTEST_ARGS---gtest_brief=1} > "$out/logs/$t.log" 2>&1
+  rc=$?
+  echo "$t rc=$rc $(($(date +%s) - t0)) s" >> "$out/times.txt"
+  grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/logs/$t.log" | sed "s|^|$t: |" >> "$out/tests.txt"
 }
 
 profile() { # each case's wall time and the renderer's phases
