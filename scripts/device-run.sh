@@ -9,6 +9,10 @@
 #             the median of BENCH_REPEAT (default 3) runs per sensor case and rpict
 #   bench-cpu the same on PoCL with every core (NO_RADIANCE=1: radcl alone)
 #   rounds    office_clear's cache build on the GPU, its rounds' time by size
+#   cold      a first run on a machine that has compiled nothing (radcl's program cache and
+#             NVIDIA's ComputeCache emptied): one sensor, compiling the scene's program, then
+#             every sensor from the caches, for each option set in COLD_OPTIONS
+#             (a '|'-separated list of RADCL_CL_OPTIONS values; default: none)
 #   profile   the benchmark's rtrace cases and rpict 256^2 on the GPU with RADCL_PROFILE=1: wall
 #             time by phase of the renderer's work (PROFILE_DEVICE=pocl: on PoCL instead)
 # usage: scripts/device-run.sh devices tests bench ...
@@ -61,6 +65,28 @@ one() { # one test executable (gtest shard $2) under the time limit: its log, ti
   grep -E "^\[  (PASSED|FAILED|SKIPPED) " "$out/logs/$t.log" | sed "s|^|$t: |" >> "$out/tests.txt"
 }
 
+cold() { # compile time of each scene's program from nothing, then the run from the cache
+  local opts="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3" o c
+  local -a sets
+  IFS='|' read -ra sets <<< "${COLD_OPTIONS:-}"
+  [ ${#sets[@]} = 0 ] && sets=("")
+  cd "$root/tests/data/scenes" || return
+  for o in "${sets[@]}"; do
+    for c in office_clear:office_grid luminaires:luminaires_grid; do
+      rm -rf /tmp/radcl-cold ~/.nv/ComputeCache
+      echo "== ${c%%:*} options '$o'"
+      export RADCL_CL_OPTIONS=$o RADCL_CACHE_DIR=/tmp/radcl-cold
+      /usr/bin/time -f "first sensor, compiling: %e s" "$b/bin/rtrace" -h -I $opts "${c%%:*}.oct" \
+        < <(head -n 1 "${c#*:}.pts") > /dev/null
+      /usr/bin/time -f "all sensors, cached: %e s" "$b/bin/rtrace" -n "$(nproc)" -u- -h -I $opts \
+        "${c%%:*}.oct" < "${c#*:}.pts" > "$out/cold_${c%%:*}_${#o}.txt"
+    done
+  done
+  unset RADCL_CL_OPTIONS
+  export RADCL_CACHE_DIR=/tmp/radcl-cache
+  cd "$root" || return
+}
+
 profile() { # each case's wall time and the renderer's phases
   local opts="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3" dev=${PROFILE_DEVICE:-nvidia}
   timed() { RADCL_DEVICE=$dev RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user" "$@" > /dev/null; }
@@ -90,6 +116,7 @@ for what in "$@"; do
   bench) RADCL_DEVICE=nvidia BENCH_REPEAT=${BENCH_REPEAT:-3} "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
   bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;
   profile) profile 2>&1 | tee "$out/profile.txt" ;;
+  cold) RADCL_DEVICE=nvidia cold 2>&1 | tee "$out/cold.txt" ;;
   rounds) (cd "$root/tests/data/scenes" && RADCL_DEVICE=nvidia RADCL_DEBUG_CACHE=1 "$b/bin/rtrace" \
       -n "$(nproc)" -u- -h -I -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 office_clear.oct \
       < office_grid.pts 2>&1 >/dev/null | awk '/round/ { n = $6

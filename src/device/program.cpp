@@ -79,8 +79,17 @@ std::string program_cache_dir() {
   return dir.string();
 }
 
+namespace {
+// RADCL_CL_OPTIONS: build options added to every program's (say, a vendor's optimisation
+// level, to weigh compile time against speed); they are part of the cache key.
+std::string with_user_options(std::string options) {
+  if (const char* e = std::getenv("RADCL_CL_OPTIONS"); e && *e) options += std::string(" ") + e;
+  return options;
+}
+} // namespace
+
 Program::Program(Context& ctx, const ProgramSource& src)
-    : ctx_(&ctx), source_(src.assemble()), options_(src.options) {
+    : ctx_(&ctx), source_(src.assemble()), options_(with_user_options(src.options)) {
   const DeviceInfo& dev = ctx.info();
   cl_device_id id = static_cast<cl_device_id>(dev.id);
   key_ = Hasher()

@@ -88,6 +88,32 @@ TEST(ProgramCache, DisabledByEnvironment) {
   EXPECT_EQ(cache.binaries(), 0u);
 }
 
+// RADCL_CL_OPTIONS reaches the compiler (a define it names is seen) and the cache key.
+TEST(ProgramCache, UserOptionsAreBuiltAndKeyed) {
+  CacheDir cache("user-options");
+  Context& ctx = test_context();
+  ProgramSource src{{"probe/features.cl"},
+                    "#ifndef RADCL_USER_X\n#error RADCL_CL_OPTIONS was not applied\n#endif\n",
+                    "-cl-std=CL1.2"};
+  EXPECT_THROW(Program(ctx, src), radcl::FatalError);
+  setenv("RADCL_CL_OPTIONS", "-DRADCL_USER_X=1", 1);
+  std::string key, options;
+  try {
+    Program p(ctx, src);
+    key = p.cache_key();
+    options = p.options();
+  } catch (const radcl::FatalError& e) {
+    ADD_FAILURE() << e.what();
+  }
+  unsetenv("RADCL_CL_OPTIONS");
+  EXPECT_EQ(options, "-cl-std=CL1.2 -DRADCL_USER_X=1");
+  EXPECT_EQ(cache.binaries(), 1u);
+  setenv("RADCL_CL_OPTIONS", "-DRADCL_USER_X=2", 1);
+  Program other(ctx, src);
+  unsetenv("RADCL_CL_OPTIONS");
+  EXPECT_NE(other.cache_key(), key);
+}
+
 TEST(ProgramBuild, FailureIsFatalWithTheCompilerLog) {
   Context& ctx = test_context();
   try {
