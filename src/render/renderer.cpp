@@ -110,6 +110,11 @@ device::ProgramSource shade_program(const CompiledScene& cs, const RenderSetting
   return f.program({"render/shade.cl"});
 }
 
+device::Program built(PhaseProfile& prof, device::Context& c, const device::ProgramSource& src) {
+  PhaseProfile::Scope t(prof, Phase::Build);
+  return device::Program(c, src);
+}
+
 } // namespace
 
 struct Renderer::Impl {
@@ -118,6 +123,7 @@ struct Renderer::Impl {
   device::Context& ctx;
   geometry::SceneGeometry geom;
   CompiledScene cs;
+  PhaseProfile prof; // before the program: its lifetime includes building it
   device::Program program;
   device::Kernel count, shade, accumulate, shadow_step;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
@@ -126,7 +132,6 @@ struct Renderer::Impl {
   static constexpr unsigned kSceneArgs = 11;
   Vec3d centre;
   RenderStats stats;
-  PhaseProfile prof;
   using Timed = PhaseProfile::Scope;
   // -as: hemisphere samples tally per division until the super-samples are decided.
   bool tree = false;
@@ -177,7 +182,7 @@ struct Renderer::Impl {
   }
   Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
       : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
-        program(c, shade_program(cs, st)), count(program.kernel("rc_count")),
+        program(built(prof, c, shade_program(cs, st))), count(program.kernel("rc_count")),
         shade(program.kernel("rc_shade")), accumulate(program.kernel("rc_accumulate")),
         shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
         materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
@@ -695,8 +700,11 @@ struct Renderer::Impl {
                             h.pos.z + reach * rays[i].dir[2], 0);
       }
     });
-    if (!maker) maker = std::make_unique<RecordMaker>(ctx);
     timed.reset();
+    if (!maker) {
+      Timed t(prof, Phase::Build);
+      maker = std::make_unique<RecordMaker>(ctx);
+    }
     MadeRecords out = [&] {
       Timed t(prof, Phase::Records);
       return maker->make(hemis, samples);

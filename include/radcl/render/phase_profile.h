@@ -29,6 +29,7 @@ enum class Phase {
   Bookkeeping, // a cache-build round's own work: copies of the rays that missed, their slots
   Slots,       // a wave's slot sizes counted (rc_count over a sample of its rays)
   Batch,       // a wave's own host work: primaries set up, queues moved, results summed
+  Build,       // device programs built (from source, or loaded from the program cache)
   kCount
 };
 
@@ -61,7 +62,7 @@ public:
   void print(std::FILE* f) const {
     static const char* names[] = {"trace", "leaks",       "shade",  "shadow-trace", "shadow-step",
                                   "accum", "choose",      "sample", "records",      "upload",
-                                  "super", "bookkeeping", "slots",  "batch"};
+                                  "super", "bookkeeping", "slots",  "batch",        "build"};
     static_assert(std::size(names) == static_cast<std::size_t>(Phase::kCount));
     for (int i = 0; i < static_cast<int>(Phase::kCount); ++i)
       if (calls_[i])
