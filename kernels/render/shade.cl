@@ -1,8 +1,8 @@
 /* The shading wave: one work-item per ray of the wave, with its host-computed hit. rc_shade
  * writes each hit's shadow requests and spawned rays into fixed slots per ray (the host packs
  * them in ray order); the few hits that need more room than their slots are shaded again with
- * exact offsets. rc_count runs the same code and only counts (the -as super-sample pass sizes
- * its output with it). Records depend only on the ray, never on where they are written, so
+ * exact offsets. Its count mode runs the same code and only counts (the -as super-sample pass
+ * sizes its output with it). Records depend only on the ray, never on where they are written, so
  * results are bit-identical across runs, thread counts, wave sizes and slot sizes. */
 #include "radcl/device_types.h"
 #include "radcl/rng.h"
@@ -871,23 +871,11 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   S.amb_blocked = amb_blocked;                                                                     \
   S.params = *params;
 
-kernel void rc_count(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
-                     global uint* nshadow, global uint* nspawn, uint super_mode,
-                     global const uint* super_offset, global const uint* super_data) {
-  uint i = get_global_id(0);
-  if (i >= n) return;
-  RC_SCENE_INIT
-  rc_out o;
-  rc_out_init(&o, 0);
-  if (super_mode) o.super = super_data + super_offset[i];
-  rc_shade_ray(&S, &o, rays[i], hits[i]);
-  nshadow[i] = o.nshadow;
-  nspawn[i] = o.nspawn;
-}
-
 /* Writes each ray's records from its offsets. Exact mode (caps of ~0u): the offsets come from
- * rc_count. Slot mode: every ray has room for cap_shadow and cap_spawn records; the counts
- * are written for every ray, with the top bit of nshadow set where the records did not fit. */
+ * a count. Slot mode: every ray has room for cap_shadow and cap_spawn records; the counts
+ * are written for every ray, with the top bit of nshadow set where the records did not fit.
+ * Count mode (caps of 0): only the counts are written, nothing else (a wave's slot sizes, the
+ * -as pass's exact room). One kernel does all three, so its code is compiled once. */
 kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
                      global const uint* shadow_offset, global const uint* spawn_offset,
                      global rc_shadow* shadows, global rc_ray* spawned, global float4* immediate,
@@ -897,15 +885,23 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
+  const int counting = cap_shadow == 0u && cap_spawn == 0u;
+  const int slots = !counting && cap_shadow != 0xFFFFFFFFu;
   rc_out o;
-  rc_out_init(&o, 1);
+  rc_out_init(&o, !counting);
   if (super_mode) o.super = super_data + super_offset[i];
-  int slots = cap_shadow != 0xFFFFFFFFu;
-  o.cap_shadow = cap_shadow;
-  o.cap_spawn = cap_spawn;
-  o.shadows = shadows + (slots ? (ulong)i * cap_shadow : shadow_offset[i]);
-  o.spawned = spawned + (slots ? (ulong)i * cap_spawn : spawn_offset[i]);
+  if (!counting) {
+    o.cap_shadow = cap_shadow;
+    o.cap_spawn = cap_spawn;
+    o.shadows = shadows + (slots ? (ulong)i * cap_shadow : shadow_offset[i]);
+    o.spawned = spawned + (slots ? (ulong)i * cap_spawn : spawn_offset[i]);
+  }
   rc_shade_ray(&S, &o, rays[i], hits[i]);
+  if (counting) {
+    nshadow[i] = o.nshadow;
+    nspawn[i] = o.nspawn;
+    return;
+  }
   immediate[i] = (float4)(o.immediate, 0.0f);
   if (slots) {
     nshadow[i] = o.nshadow | (o.write ? 0u : 0x80000000u);

@@ -125,7 +125,7 @@ struct Renderer::Impl {
   CompiledScene cs;
   PhaseProfile prof; // before the program: its lifetime includes building it
   device::Program program;
-  device::Kernel count, shade, accumulate, shadow_step;
+  device::Kernel shade, accumulate, shadow_step;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
   device::GrowingBuffer amb_records, amb_nodes, amb_blocked;
   // Kernel arguments set_scene_args() fills; a kernel's next argument follows them.
@@ -182,11 +182,11 @@ struct Renderer::Impl {
   }
   Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
       : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
-        program(built(prof, c, shade_program(cs, st))), count(program.kernel("rc_count")),
-        shade(program.kernel("rc_shade")), accumulate(program.kernel("rc_accumulate")),
-        shadow_step(program.kernel("rc_shadow_step")), surfaces(upload(c, cs.surfaces)),
-        materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
-        patterns(upload(c, cs.patterns)), centre(geom.centre()) {
+        program(built(prof, c, shade_program(cs, st))), shade(program.kernel("rc_shade")),
+        accumulate(program.kernel("rc_accumulate")), shadow_step(program.kernel("rc_shadow_step")),
+        surfaces(upload(c, cs.surfaces)), materials(upload(c, cs.materials)),
+        args(upload(c, cs.args)), params(c, sizeof(rc_params)), patterns(upload(c, cs.patterns)),
+        centre(geom.centre()) {
     amb_blocked.update(c, std::vector<std::uint32_t>(4, 0u), 0);
     if (st.ambient_list != RenderSettings::AmbientList::None) {
       mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
@@ -394,7 +394,7 @@ struct Renderer::Impl {
     const bool have_ids =
         std::none_of(rays.begin(), rays.end(), [](const PrimaryRay& r) { return r.id == RC_NONE; });
     for (int round = 0; !todo.empty(); ++round) {
-      std::optional<Timed> timed(std::in_place, prof, Phase::Bookkeeping);
+      Timed timed(prof, Phase::Bookkeeping);
       const bool last = round >= kRounds;
       // The first pass renders every ray in place; later ones the copies of those that missed.
       const bool whole = round == 0 && have_ids;
@@ -428,12 +428,12 @@ struct Renderer::Impl {
       // depth) is thrown away whole: its shadow rays are not traced, and every ray goes again.
       throwaway = round == 0 && !last && will_all_miss(st);
       misses.clear();
-      timed.reset();
+      timed.stop();
       const auto t0 = std::chrono::steady_clock::now();
       run(sub, res);
       const double dt =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      timed.emplace(prof, Phase::Bookkeeping);
+      timed.start(Phase::Bookkeeping);
       set_collect(false);
       const bool thrown = std::exchange(throwaway, false);
       starts = saved_starts;
@@ -454,7 +454,7 @@ struct Renderer::Impl {
         std::fprintf(stderr,
                      "cache: nesting %d round %d: %zu primaries, %zu missed, %zu misses %.6f\n",
                      nesting, round, sub.size(), again.size(), miss.size(), dt);
-      timed.reset();
+      timed.stop();
       if (!miss.empty()) make_records(miss, round);
       todo = std::move(again);
     }
@@ -471,11 +471,11 @@ struct Renderer::Impl {
     const double floor_sep = aa * std::max(settings.ambient_min_radius, 1e-6 * settings.cube_size);
     const double sep =
         std::max(floor_sep, aa * settings.ambient_max_radius / std::ldexp(1.0, round));
-    std::optional<Timed> timed(std::in_place, prof, Phase::Choose);
+    Timed timed(prof, Phase::Choose);
     std::vector<const rc_ray*> chosen;
     for (std::uint32_t i : choose_spread(miss, sep))
       chosen.push_back(&miss[i]);
-    timed.reset();
+    timed.stop();
     sample_hemispheres(chosen);
   }
 
@@ -493,7 +493,7 @@ struct Renderer::Impl {
                                const std::vector<RayStart>& start, std::vector<PrimaryResult>& res,
                                std::vector<double>& nearest) {
     if (settings.as <= 0) return;
-    std::optional<Timed> timed(std::in_place, prof, Phase::Sample);
+    Timed timed(prof, Phase::Sample);
     std::vector<PrimaryRay> extra;
     std::vector<RayStart> extra_start;
     std::vector<std::size_t> division; // the sample slot each extra one refines
@@ -564,11 +564,11 @@ struct Renderer::Impl {
     }
     if (extra.empty()) return;
     std::vector<PrimaryResult> more(extra.size());
-    timed.reset();
+    timed.stop();
     ++nesting;
     build_render(extra, more, extra_start);
     --nesting;
-    timed.emplace(prof, Phase::Sample);
+    timed.start(Phase::Sample);
     // Each division's value: the mean of its samples; its distance: the nearest (its point
     // stays the first sample's).
     std::vector<int> count(res.size(), 1);
@@ -595,7 +595,7 @@ struct Renderer::Impl {
     std::vector<rc_amb_hemi> hemis;
     std::vector<PrimaryRay> rays;
     std::vector<RayStart> start;
-    std::optional<Timed> timed(std::in_place, prof, Phase::Sample);
+    Timed timed(prof, Phase::Sample);
     const HemisphereSettings hs{settings.ambient_min_radius, settings.ambient_max_radius,
                                 settings.aa};
     // Which misses are sampled, each hemisphere's frame, first sample and ids, in order;
@@ -670,16 +670,16 @@ struct Renderer::Impl {
     });
     if (hemis.empty()) return;
     std::vector<PrimaryResult> res(rays.size());
-    timed.reset();
+    timed.stop();
     ++nesting;
     build_render(rays, res, start);
     --nesting;
-    timed.emplace(prof, Phase::Sample);
+    timed.start(Phase::Sample);
     std::vector<double> nearest(res.size());
     for_rows(res.size(), [&](std::size_t i) { nearest[i] = sample_length(res[i]); });
-    timed.reset();
+    timed.stop();
     supersample_hemispheres(hemis, rays, start, res, nearest);
-    timed.emplace(prof, Phase::Sample);
+    timed.start(Phase::Sample);
     // The strata as the record kernel reads them: value over ns^2, reciprocal distance (0:
     // nothing hit, < 0: a failed sample) and the point met, clamped as Radiance clamps it.
     const double far = 10 * settings.cube_size + 1000;
@@ -700,7 +700,7 @@ struct Renderer::Impl {
                             h.pos.z + reach * rays[i].dir[2], 0);
       }
     });
-    timed.reset();
+    timed.stop();
     if (!maker) {
       Timed t(prof, Phase::Build);
       maker = std::make_unique<RecordMaker>(ctx);
@@ -786,6 +786,20 @@ struct Renderer::Impl {
         .arg(kSceneArgs + 14, l.nspawn ? *l.nspawn : *l.spawn_off);
     ctx.run(shade, n);
   }
+  // rc_shade in count mode (caps of 0): each ray's shadow and child counts only; with super
+  // offsets and data, those of its -as pass. Nothing else is written.
+  void run_count(device::Buffer& rays, device::Buffer& hits, device::Buffer& nshadow,
+                 device::Buffer& nspawn, std::size_t n, device::Buffer* super_off = nullptr,
+                 device::Buffer* super_data = nullptr) {
+    ShadeLaunch l{&rays, &hits, &nshadow, &nspawn, &nshadow, &nshadow, &nshadow};
+    l.super = super_off ? 1 : 0;
+    l.super_off = super_off;
+    l.super_data = super_data;
+    l.cap_shadow = l.cap_spawn = 0;
+    l.nshadow = &nshadow;
+    l.nspawn = &nspawn;
+    run_shade(l, n);
+  }
 
   // The device record of a geometry answer; a miss may still hit a distant source.
   rc_hit to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h) const {
@@ -838,7 +852,7 @@ struct Renderer::Impl {
 
   void render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
                     std::size_t first_index) {
-    std::optional<Timed> timed(std::in_place, prof, Phase::Batch);
+    Timed timed(prof, Phase::Batch);
     batch_first = first_index;
     id_slot.clear();
     if (std::any_of(prim.begin(), prim.end(),
@@ -900,7 +914,7 @@ struct Renderer::Impl {
       }
     }
 
-    timed.reset();
+    timed.stop();
     bool first_wave = true;
     while (!queue.empty()) {
       std::size_t n = queue.size();
@@ -926,7 +940,7 @@ struct Renderer::Impl {
           supersample(req, next);
       queue = std::move(next);
     }
-    timed.emplace(prof, Phase::Batch);
+    timed.start(Phase::Batch);
     const auto finish = [&](std::size_t i) {
       res[i].value = tree ? tally.sum(i) : sums[i];
       res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
@@ -1022,21 +1036,13 @@ struct Renderer::Impl {
       data.push_back(req[i].which);
       data.insert(data.end(), req[i].counts.begin(), req[i].counts.end());
     }
-    std::uint32_t un = static_cast<std::uint32_t>(n);
     device::Buffer& brays = scratch(kRays, rays);
     device::Buffer& bhits = scratch(kHits, hit);
     device::Buffer& boff = scratch(kSuperOff, off);
     device::Buffer& bdata = scratch(kSuperData, data);
     device::Buffer& bnshadow = scratch(kNShadow, n * 4);
     device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
-    count.arg(0, brays).arg(1, bhits).arg(2, un);
-    set_scene_args(count, 3);
-    count.arg(kSceneArgs + 3, bnshadow)
-        .arg(kSceneArgs + 4, bnspawn)
-        .arg(kSceneArgs + 5, 1u)
-        .arg(kSceneArgs + 6, boff)
-        .arg(kSceneArgs + 7, bdata);
-    ctx.run(count, n);
+    run_count(brays, bhits, bnshadow, bnspawn, n, &boff, &bdata);
     std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
     std::vector<std::uint32_t> counts = spawn_off;
     std::uint32_t nspawn = prefix_sum(spawn_off);
@@ -1058,7 +1064,7 @@ struct Renderer::Impl {
   }
 
   // Slot sizes for a wave: the counts of an even spread of its rays (at most 512 of them,
-  // counted by rc_count), enough room for about 98% of them.
+  // counted by rc_shade's count mode), enough room for about 98% of them.
   // A small wave keeps the last sizes: counting would cost it a launch and a second shading of
   // each ray, more than re-shading its few rays that do not fit.
   void size_slots(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits) {
@@ -1072,19 +1078,11 @@ struct Renderer::Impl {
       h.push_back(hits[i]);
     }
     std::size_t m = r.size();
-    std::uint32_t um = static_cast<std::uint32_t>(m);
     device::Buffer& brays = scratch(kStepRays, r);
     device::Buffer& bhits = scratch(kStepHits, h);
     device::Buffer& bnshadow = scratch(kNShadow, m * 4);
     device::Buffer& bnspawn = scratch(kNSpawn, m * 4);
-    count.arg(0, brays).arg(1, bhits).arg(2, um);
-    set_scene_args(count, 3);
-    count.arg(kSceneArgs + 3, bnshadow)
-        .arg(kSceneArgs + 4, bnspawn)
-        .arg(kSceneArgs + 5, 0u)
-        .arg(kSceneArgs + 6, bnspawn)
-        .arg(kSceneArgs + 7, bnspawn);
-    ctx.run(count, m);
+    run_count(brays, bhits, bnshadow, bnspawn, m);
     auto quantile = [m](std::vector<std::uint32_t> v) {
       std::size_t k = m * 98 / 100;
       std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
@@ -1154,7 +1152,7 @@ struct Renderer::Impl {
   void shade_slice(const std::vector<rc_ray>& queue, const std::vector<rc_hit>& hits, std::size_t a,
                    std::size_t b, std::vector<Vec3d>& sums, std::vector<rc_ray>& next) {
     std::size_t n = b - a;
-    std::optional<Timed> timed(std::in_place, prof, Phase::Shade);
+    Timed timed(prof, Phase::Shade);
     std::uint32_t un = static_cast<std::uint32_t>(n);
     const rc_ray* rays = queue.data() + a;
     const rc_hit* hit = hits.data() + a;
@@ -1225,9 +1223,9 @@ struct Renderer::Impl {
 
     std::vector<rc_shadow> requested;
     if (settings.trace == RenderSettings::Trace::RaysAndShadows) requested = shadows;
-    timed.reset();
+    timed.stop();
     std::vector<std::uint8_t> blocked = trace_shadows(shadows);
-    timed.emplace(prof, Phase::Accumulate);
+    timed.start(Phase::Accumulate);
     if (nshadow > 0) bshadows.write(shadows.data(), nshadow * sizeof(rc_shadow));
     device::Buffer& bblocked = scratch(kBlocked, blocked);
     device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
@@ -1456,13 +1454,13 @@ struct Renderer::Impl {
         rays[i].tmax =
             src.kind == RC_SRC_DISTANT || !std::isfinite(s.dir.w) ? 1e300 : s.dir.w * 1.001 + 1e-3;
       });
-      std::optional<Timed> timed(std::in_place, prof, Phase::ShadowTrace);
+      Timed timed(prof, Phase::ShadowTrace);
       std::vector<std::optional<geometry::Hit>> gh(m);
       geom.intersect(rays, gh);
       stats.shadow += m;
       std::vector<rc_hit> hits(m);
       for_rows(m, [&](std::size_t i) { hits[i] = to_device(rays[i], gh[i]); });
-      timed.emplace(prof, Phase::ShadowStep);
+      timed.start(Phase::ShadowStep);
 
       device::Buffer& bcur = scratch(kStepRays, cur);
       device::Buffer& bhits = scratch(kStepHits, hits);

@@ -27,7 +27,7 @@ enum class Phase {
   Upload,      // the cache's trees rebuilt and uploaded
   Super,       // the -as pass's second shading of a wave's rays (the tally tree's requests)
   Bookkeeping, // a cache-build round's own work: copies of the rays that missed, their slots
-  Slots,       // a wave's slot sizes counted (rc_count over a sample of its rays)
+  Slots,       // a wave's slot sizes counted (rc_shade counting a sample of its rays)
   Batch,       // a wave's own host work: primaries set up, queues moved, results summed
   Build,       // device programs built (from source, or loaded from the program cache)
   kCount
@@ -85,22 +85,30 @@ public:
             static_cast<unsigned long long>(wave_rays_[b]), wave_kernel_[b], wave_reads_[b]);
   }
 
-  // Times one phase for the scope it lives in (nothing when profiling is off).
+  // Times one phase for the scope it lives in (nothing when profiling is off); stop() ends it
+  // early, start() goes on with another phase.
   class Scope {
   public:
-    Scope(PhaseProfile& p, Phase ph) : p_(p.on_ ? &p : nullptr), ph_(ph) {
-      if (p_) t0_ = std::chrono::steady_clock::now();
-    }
-    ~Scope() {
-      if (p_)
-        p_->add(ph_, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count());
-    }
+    Scope(PhaseProfile& p, Phase ph) : p_(p.on_ ? &p : nullptr) { start(ph); }
+    ~Scope() { stop(); }
     Scope(const Scope&) = delete;
     Scope& operator=(const Scope&) = delete;
+    void start(Phase ph) {
+      stop();
+      ph_ = ph;
+      running_ = p_ != nullptr;
+      if (running_) t0_ = std::chrono::steady_clock::now();
+    }
+    void stop() {
+      if (running_)
+        p_->add(ph_, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count());
+      running_ = false;
+    }
 
   private:
     PhaseProfile* p_;
-    Phase ph_;
+    Phase ph_ = Phase::kCount;
+    bool running_ = false;
     std::chrono::steady_clock::time_point t0_{};
   };
 
