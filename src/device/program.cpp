@@ -53,6 +53,13 @@ void write_file_atomic(const fs::path& p, const unsigned char* data, size_t n) {
   if (ec) fs::remove(tmp, ec);
 }
 
+// RADCL_CL_OPTIONS: build options added to every program's (say, a vendor's optimisation
+// level, to weigh compile time against speed); they are part of the cache key.
+std::string with_user_options(std::string options) {
+  if (const char* e = std::getenv("RADCL_CL_OPTIONS"); e && *e) options += std::string(" ") + e;
+  return options;
+}
+
 } // namespace
 
 std::string program_cache_dir() {
@@ -78,15 +85,6 @@ std::string program_cache_dir() {
   }
   return dir.string();
 }
-
-namespace {
-// RADCL_CL_OPTIONS: build options added to every program's (say, a vendor's optimisation
-// level, to weigh compile time against speed); they are part of the cache key.
-std::string with_user_options(std::string options) {
-  if (const char* e = std::getenv("RADCL_CL_OPTIONS"); e && *e) options += std::string(" ") + e;
-  return options;
-}
-} // namespace
 
 Program::Program(Context& ctx, const ProgramSource& src)
     : ctx_(&ctx), source_(src.assemble()), options_(with_user_options(src.options)) {

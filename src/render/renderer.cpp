@@ -786,6 +786,7 @@ struct Renderer::Impl {
         .arg(kSceneArgs + 14, l.nspawn ? *l.nspawn : *l.spawn_off);
     ctx.run(shade, n);
   }
+
   // rc_shade in count mode (caps of 0): each ray's shadow and child counts only; with super
   // offsets and data, those of its -as pass. Nothing else is written.
   void run_count(device::Buffer& rays, device::Buffer& hits, device::Buffer& nshadow,
