@@ -78,8 +78,16 @@ cold() { # compile time of each scene's program from nothing, then the run from 
       export RADCL_CL_OPTIONS=$o RADCL_CACHE_DIR=/tmp/radcl-cold
       /usr/bin/time -f "first sensor, compiling: %e s" "$b/bin/rtrace" -h -I $opts "${c%%:*}.oct" \
         < <(head -n 1 "${c#*:}.pts") > /dev/null
-      /usr/bin/time -f "all sensors, cached: %e s" "$b/bin/rtrace" -n "$(nproc)" -u- -h -I $opts \
-        "${c%%:*}.oct" < "${c#*:}.pts" > "$out/cold_${c%%:*}_${#o}.txt"
+      for k in 1 2 3; do
+        /usr/bin/time -f "all sensors, cached: %e s" "$b/bin/rtrace" -n "$(nproc)" -u- -h -I \
+          $opts "${c%%:*}.oct" < "${c#*:}.pts" > "$out/cold_${c%%:*}_${#o}.txt"
+      done
+      # The programs' sizes: NVIDIA's binaries are PTX text, its functions' lengths in lines.
+      for f in /tmp/radcl-cold/programs/*.bin; do
+        echo "$(basename "$f"): $(wc -c < "$f") bytes"
+        awk '/^\.(visible |weak )?\.?(entry|func)/ { n = $0; s = NR }
+          /^}/ && n != "" { printf "  %d lines %s\n", NR - s, n; n = "" }' "$f" | sort -rn | head -6
+      done
     done
   done
   unset RADCL_CL_OPTIONS

@@ -11,6 +11,14 @@ typedef uint rc_u32;
 typedef int rc_i32;
 typedef ulong rc_u64;
 typedef float4 rc_float4;
+/* Large functions called from several places (shading, patterns, generated .cal code) stay
+ * calls: a compiler that inlines everything, as NVIDIA's does, builds a copy per call site, and
+ * a scene's first build took twice as long (docs/device.md). -DRADCL_INLINE_ALL undoes it. */
+#ifdef RADCL_INLINE_ALL
+#define RC_NOINLINE
+#else
+#define RC_NOINLINE __attribute__((noinline))
+#endif
 #else
 #include <stdint.h>
 typedef uint32_t rc_u32;

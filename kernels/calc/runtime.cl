@@ -2,6 +2,7 @@
  * error rules (a non-finite result becomes 0 and raises an error bit, calc-language.md §3.2),
  * its rand(), arg() and the shared noise functions. */
 #include "radcl/calc/device_context.h"
+#include "radcl/device_types.h" /* RC_NOINLINE */
 /* Empty: PoCL's compile time grows exponentially with unrolled recursion marked noinline. */
 #define RC_CALC_NOINLINE
 #define RC_NOISE_REAL rc_calc_real

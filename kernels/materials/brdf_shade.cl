@@ -10,6 +10,7 @@ static inline int rc_brdf_dumb(const rc_scene_args* S, const rc_hit* h) {
 /* plasfunc, metfunc, transfunc, plasdata, metdata, transdata (m_brdf2): n faces the ray (the
  * caller flipped a back face). No specular rays: the function only shapes direct light, and
  * the ambient gets the material colour x (1 - trans) on the ray's side and x trans beyond. */
+RC_NOINLINE
 static void rc_shade_brdf2(const rc_scene_args* S, rc_out* o, const rc_material* mat,
                            const rc_ray* r, const rc_hit* h, float3 n, rc_rng_key key) {
   const rc_params* P = &S->params;
@@ -30,6 +31,7 @@ static void rc_shade_brdf2(const rc_scene_args* S, rc_out* o, const rc_material*
  * ray descends from an ambient one) and a mirror ray, weighted by the coefficient expressions;
  * the diffuse parts to the ambient on each side; the direct part when there is a diffuse
  * component or the red function is not the literal 0. Both sides are seen (no -bv rule). */
+RC_NOINLINE
 static void rc_shade_brtdfunc(const rc_scene_args* S, rc_out* o, const rc_material* mat,
                               const rc_ray* r, const rc_hit* h, rc_rng_key key) {
   const rc_params* P = &S->params;

@@ -102,6 +102,7 @@ static void rc_direct_select(global rc_shadow* g, uint n, float known, const rc_
  * included (brightdata distributions on light and illum). The shadow ray's T continues its
  * parent's: dist0 (the ray tree up to p) plus dist; its Ts is dist. Virtual sources and distant
  * ones are not modulated (docs/render.md). */
+RC_NOINLINE
 static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* src, float3 p,
                                 float3 l, float dist, float dist0) {
   float3 pcol = (float3)(1.0f);
@@ -136,6 +137,7 @@ static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* 
 /* Direct contributions of every source sample (`known`: brightness of what the ray's own value
  * already holds, Radiance's r->rcol, for the threshold), for a normal material m or (m null) a
  * BRDF material b. */
+RC_NOINLINE
 static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, struct rc_brdf* b,
                       const rc_ray* r, float3 p, float3 n, float3 d, int flat, float3 coef,
                       float known, rc_rng_key key) {

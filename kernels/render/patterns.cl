@@ -142,6 +142,7 @@ static void rc_apply_pattern(const rc_scene_args* S, const rc_pattern* ptp, floa
  * below, as Radiance's raymixture mixes the sides' r->pcol and r->pert (a side whose share is
  * within 1e-6 of nothing is not evaluated there, which leaves it unchanged). */
 #define RC_BLEND_FRAMES (2 * RC_MIX_MAX_DEPTH + 1)
+RC_NOINLINE
 static void rc_apply_patterns(const rc_scene_args* S, const rc_material* m, float3 d,
                               const rc_hit* h, float3* pcol, float3* pert) {
   float3 col[RC_BLEND_FRAMES], per[RC_BLEND_FRAMES];

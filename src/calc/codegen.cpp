@@ -14,6 +14,9 @@
 namespace radcl::calc {
 namespace {
 
+// Generated bodies longer than this many characters are kept out of line (source()).
+constexpr std::size_t kInlineBody = 160;
+
 // What a function-valued parameter is bound to in one specialised copy.
 struct Callee {
   const Definition* def = nullptr;
@@ -447,11 +450,17 @@ std::string CodeGenerator::source() {
   impl_->drain();
   std::string s = "/* Generated from .cal definitions by radcl (src/calc/codegen.cpp). */\n"
                   "#include \"calc/runtime.cl\"\n\n";
+  // Larger bodies stay calls (RC_NOINLINE, kernels/calc/runtime.cl): a compiler that inlines
+  // everything copies them into every caller (a sky's acos into each of its uses).
+  auto proto = [](const Impl::Function& f) {
+    const bool big = f.body.size() > kInlineBody && f.proto.rfind("RC_CALC_NOINLINE", 0) != 0;
+    return (big ? "RC_NOINLINE " : "") + f.proto;
+  };
   for (const auto& f : impl_->functions)
-    s += f.proto + ";\n";
+    s += proto(f) + ";\n";
   s += "\n";
   for (const auto& f : impl_->functions)
-    s += f.proto + " {\n" + f.body + "}\n\n";
+    s += proto(f) + " {\n" + f.body + "}\n\n";
   return s;
 }
 

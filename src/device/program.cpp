@@ -53,6 +53,18 @@ void write_file_atomic(const fs::path& p, const unsigned char* data, size_t n) {
   if (ec) fs::remove(tmp, ec);
 }
 
+// RADCL_DUMP_PROGRAMS=<dir>: every program's assembled source as <key>.cl, its first line a
+// comment with the build options, for offline compilers (weighing what a kernel costs to build).
+void dump_program(const std::string& key, const std::string& source, const std::string& options) {
+  const char* d = std::getenv("RADCL_DUMP_PROGRAMS");
+  if (!d || !*d) return;
+  std::error_code ec;
+  fs::create_directories(d, ec);
+  const std::string text = "// options: " + options + "\n" + source;
+  write_file_atomic(fs::path(d) / (key + ".cl"),
+                    reinterpret_cast<const unsigned char*>(text.data()), text.size());
+}
+
 // RADCL_CL_OPTIONS: build options added to every program's (say, a vendor's optimisation
 // level, to weigh compile time against speed); they are part of the cache key.
 std::string with_user_options(std::string options) {
@@ -99,6 +111,7 @@ Program::Program(Context& ctx, const ProgramSource& src)
              .add(dev.device_version)
              .add(dev.driver_version)
              .hex();
+  dump_program(key_, source_, options_);
   std::string dir = program_cache_dir();
   fs::path cached = dir.empty() ? fs::path() : fs::path(dir) / (key_ + ".bin");
 

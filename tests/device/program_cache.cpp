@@ -114,6 +114,22 @@ TEST(ProgramCache, UserOptionsAreBuiltAndKeyed) {
   EXPECT_NE(other.cache_key(), key);
 }
 
+// RADCL_DUMP_PROGRAMS writes what is built: the options line, then the assembled source.
+TEST(ProgramCache, DumpWritesSourceWithItsOptions) {
+  CacheDir cache("dump");
+  const fs::path dump = cache.dir / "dumped";
+  setenv("RADCL_DUMP_PROGRAMS", dump.c_str(), 1);
+  Program p(test_context(), ProgramSource{{"probe/features.cl"}, "", "-cl-std=CL1.2 -DX=1"});
+  unsetenv("RADCL_DUMP_PROGRAMS");
+  std::ifstream in(dump / (p.cache_key() + ".cl"));
+  ASSERT_TRUE(in) << "no " << p.cache_key() << ".cl in " << dump;
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first, "// options: -cl-std=CL1.2 -DX=1");
+  std::string rest((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(rest, p.source());
+}
+
 TEST(ProgramBuild, FailureIsFatalWithTheCompilerLog) {
   Context& ctx = test_context();
   try {
