@@ -11,8 +11,9 @@
 #   rounds    office_clear's cache build on the GPU, its rounds' time by size
 #   cold      a first run on a machine that has compiled nothing (radcl's program cache and
 #             NVIDIA's ComputeCache emptied): one sensor, compiling the scene's program, then
-#             every sensor from the caches, for each option set in COLD_OPTIONS
-#             (a '|'-separated list of RADCL_CL_OPTIONS values; default: none)
+#             every sensor from the caches three times, and the programs' PTX sizes (their
+#             largest functions in lines), for each option set in COLD_OPTIONS (a
+#             '|'-separated list of RADCL_CL_OPTIONS values; default: none)
 #   profile   the benchmark's rtrace cases and rpict 256^2 on the GPU with RADCL_PROFILE=1: wall
 #             time by phase of the renderer's work (PROFILE_DEVICE=pocl: on PoCL instead)
 # usage: scripts/device-run.sh devices tests bench ...
