@@ -13,7 +13,9 @@
 #             NVIDIA's ComputeCache emptied): one sensor, compiling the scene's program, then
 #             every sensor from the caches three times, and the programs' PTX sizes (their
 #             largest functions in lines), for each option set in COLD_OPTIONS (a
-#             '|'-separated list of RADCL_CL_OPTIONS values; default: none)
+#             '|'-separated list of RADCL_CL_OPTIONS values; default: none); COLD_SCENES
+#             lists octree:sensor-file pairs (a file without a suffix takes .pts; default:
+#             office_clear and luminaires)
 #   profile   the benchmark's rtrace cases and rpict 256^2 on the GPU with RADCL_PROFILE=1: wall
 #             time by phase of the renderer's work (PROFILE_DEVICE=pocl: on PoCL instead)
 # usage: scripts/device-run.sh devices tests bench ...
@@ -73,15 +75,17 @@ cold() { # compile time of each scene's program from nothing, then the run from 
   [ ${#sets[@]} = 0 ] && sets=("")
   cd "$root/tests/data/scenes" || return
   for o in "${sets[@]}"; do
-    for c in office_clear:office_grid luminaires:luminaires_grid; do
+    for c in ${COLD_SCENES:-office_clear:office_grid luminaires:luminaires_grid}; do
+      local pts=${c#*:}
+      [[ $pts == *.* ]] || pts=$pts.pts
       rm -rf /tmp/radcl-cold ~/.nv/ComputeCache
       echo "== ${c%%:*} options '$o'"
       export RADCL_CL_OPTIONS=$o RADCL_CACHE_DIR=/tmp/radcl-cold
       /usr/bin/time -f "first sensor, compiling: %e s" "$b/bin/rtrace" -h -I $opts "${c%%:*}.oct" \
-        < <(head -n 1 "${c#*:}.pts") > /dev/null
+        < <(head -n 1 "$pts") > /dev/null
       for k in 1 2 3; do
         /usr/bin/time -f "all sensors, cached: %e s" "$b/bin/rtrace" -n "$(nproc)" -u- -h -I \
-          $opts "${c%%:*}.oct" < "${c#*:}.pts" > "$out/cold_${c%%:*}_${#o}.txt"
+          $opts "${c%%:*}.oct" < "$pts" > "$out/cold_${c%%:*}_${#o}.txt"
       done
       # The programs' sizes: NVIDIA's binaries are PTX text, its functions' lengths in lines.
       for f in /tmp/radcl-cold/programs/*.bin; do
