@@ -18,7 +18,16 @@ typedef struct rc_u32x4 {
 #define RC_PHILOX_W0 0x9E3779B9u
 #define RC_PHILOX_W1 0xBB67AE85u
 
-RC_RNG_INLINE rc_u32x4 rc_philox4x32(rc_u32x4 c, rc_u32 k0, rc_u32 k1) {
+/* In the kernels the generator's ten rounds stay one function rather than a copy at each of
+ * its many call sites (as RC_NOINLINE, device_types.h: NVIDIA's first build of office_clear
+ * 7.79 -> 7.00 s, run times the same; docs/device.md). */
+#if defined(__OPENCL_C_VERSION__) && !defined(RADCL_INLINE_ALL)
+#define RC_RNG_PHILOX static __attribute__((noinline))
+#else
+#define RC_RNG_PHILOX RC_RNG_INLINE
+#endif
+
+RC_RNG_PHILOX rc_u32x4 rc_philox4x32(rc_u32x4 c, rc_u32 k0, rc_u32 k1) {
   for (int r = 0; r < 10; ++r) {
     rc_u64 p0 = (rc_u64)RC_PHILOX_M0 * (rc_u64)c.v[0];
     rc_u64 p1 = (rc_u64)RC_PHILOX_M1 * (rc_u64)c.v[2];
