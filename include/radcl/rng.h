@@ -19,10 +19,10 @@ typedef struct rc_u32x4 {
 #define RC_PHILOX_W1 0xBB67AE85u
 
 /* In the kernels the generator's ten rounds stay one function rather than a copy at each of
- * its many call sites (as RC_NOINLINE, device_types.h: NVIDIA's first build of office_clear
+ * its many call sites (RC_NOINLINE, device_types.h: NVIDIA's first build of office_clear
  * 7.79 -> 7.00 s, run times the same; docs/device.md). */
-#if defined(__OPENCL_C_VERSION__) && !defined(RADCL_INLINE_ALL)
-#define RC_RNG_PHILOX static __attribute__((noinline))
+#ifdef __OPENCL_C_VERSION__
+#define RC_RNG_PHILOX RC_NOINLINE static
 #else
 #define RC_RNG_PHILOX RC_RNG_INLINE
 #endif

@@ -62,6 +62,7 @@ struct CodeGenerator::Impl {
 
   struct Function {
     std::string name, proto, body;
+    bool recursive = false; // its proto carries RC_CALC_NOINLINE
   };
   std::vector<Function> functions;
   std::map<std::string, std::string> by_key; // instance or wrapper key -> function name
@@ -180,12 +181,14 @@ struct CodeGenerator::Impl {
     std::string name = "rc_cal_" + mangle(d->name) + "_" + std::to_string(functions.size());
     // Copies of recursive functions stay calls: inlining the whole unrolled chain makes
     // programs that take minutes to compile.
-    std::string proto = std::string(recursive(d) ? "RC_CALC_NOINLINE " : "") + "rc_calc_real " +
-                        name + "(rc_calc_env* e";
+    const bool rec = recursive(d);
+    std::string proto =
+        std::string(rec ? "RC_CALC_NOINLINE " : "") + "rc_calc_real " + name + "(rc_calc_env* e";
     for (std::size_t i = 0; i < d->params.size(); ++i)
       if (!bound[i].set()) proto += ", rc_calc_real p" + std::to_string(i);
     proto += ")";
     add_function(key, name, proto);
+    functions.back().recursive = rec;
     pending.push_back({functions.size() - 1, d, depth, bound});
     return name;
   }
@@ -453,7 +456,7 @@ std::string CodeGenerator::source() {
   // Larger bodies stay calls (RC_NOINLINE, kernels/calc/runtime.cl): a compiler that inlines
   // everything copies them into every caller (a sky's acos into each of its uses).
   auto proto = [](const Impl::Function& f) {
-    const bool big = f.body.size() > kInlineBody && f.proto.rfind("RC_CALC_NOINLINE", 0) != 0;
+    const bool big = f.body.size() > kInlineBody && !f.recursive;
     return (big ? "RC_NOINLINE " : "") + f.proto;
   };
   for (const auto& f : impl_->functions)
