@@ -693,8 +693,14 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
   uint kind = r.flags & RC_RAY_KIND_MASK;
   rc_surface surf = *sp;
   /* illum: a source for shadow rays aimed at it, otherwise its alternate material (or
-   * nothing: the ray passes through). */
-  if (mat.type == RC_OBJ_ILLUM && mat.alt != RC_NONE) mat = S->materials[mat.alt];
+   * nothing: the ray passes through). An ambient or specular ray (or one descended from one)
+   * meeting its front side sees black, as at any light source: the direct calculation
+   * counts what the illum stands for (Radiance's badcomponent comes before its passillum). */
+  if (mat.type == RC_OBJ_ILLUM) {
+    if (h.front && h.pos.w >= 0.0f && (rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR)))
+      return;
+    if (mat.alt != RC_NONE) mat = S->materials[mat.alt];
+  }
 #ifdef RADCL_HAS_PATTERNS
   if (mat.npatterns) rc_apply_patterns(S, &mat, r.dir.xyz, &h, &o->pcol, &o->pert);
 #endif
