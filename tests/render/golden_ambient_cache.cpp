@@ -152,7 +152,10 @@ TEST(GoldenAmbientCache, OfficeClearDefaultFromScratch) {
 // own -aa 0 agrees with it within that). The _high runs are not that answer: they are cache
 // runs themselves and 3.4-3.8% above it on the offices (at their own -ab 8 still +0.5-0.9%;
 // docs/bench/ambient.md), so they measure a run's bounce count and Radiance's cache bias as
-// much as its error. radcl's errors against them are recorded, not bounded.
+// much as its error. Against them the bound is 1.5 times the mean errors of six Radiance
+// default runs (docs/ambient.md, "Accuracy").
+constexpr int kRadianceRuns = 6;
+
 struct AccuracyCase {
   const char *octree, *grid, *name;
 };
@@ -174,6 +177,20 @@ TEST_P(DefaultAccuracy, WithinRadiancesErrorsOfTheConvergedAnswer) {
   Errors e = errors(ours, exact), r = errors(radiance, exact), h = errors(ours, high);
   EXPECT_LE(e.mean, 1.5 * r.mean) << "radcl " << e.mean << ", Radiance " << r.mean;
   EXPECT_LE(e.worst, 1.5 * r.worst) << "radcl " << e.worst << ", Radiance " << r.worst;
+  // Against _high, with Radiance's default run taken as the mean errors of six independent
+  // ones (results/radiance_runs/): one run's errors against _high spread widely (office_clear
+  // mean 1.39-2.08%, worst 3.70-13.93%), and the stored _default run is one draw of them.
+  Errors typical;
+  for (int i = 1; i <= kRadianceRuns; ++i) {
+    Errors ri = errors(
+        radcl::test::read_rgb(radcl::test::data("results/radiance_runs/" + std::string(c.name) +
+                                                "_default_" + std::to_string(i) + ".txt")),
+        high);
+    typical.mean += ri.mean / kRadianceRuns;
+    typical.worst += ri.worst / kRadianceRuns;
+  }
+  EXPECT_LE(h.mean, 1.5 * typical.mean) << "radcl " << h.mean << ", Radiance " << typical.mean;
+  EXPECT_LE(h.worst, 1.5 * typical.worst) << "radcl " << h.worst << ", Radiance " << typical.worst;
   RecordProperty("mean", std::to_string(e.mean));
   RecordProperty("worst", std::to_string(e.worst));
   RecordProperty("mean_vs_high", std::to_string(h.mean));
