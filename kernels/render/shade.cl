@@ -406,13 +406,21 @@ static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, co
   float3 rad = (float3)(a[0], a[1], a[2]);
   int distant = h->pos.w < 0.0f;
   if (!distant && !h->front) return (float3)(0.0f); /* only the front side emits */
-  if (kind == RC_RAY_PRIMARY && !(S->params.flags & RC_PF_DV)) return (float3)(0.0f);
+  if (!(S->params.flags & RC_PF_DV)) {
+    /* -dv-: sources are black to every ray (shadow rays are not shaded here), except a glow
+     * beyond its radius of influence along the whole path from the primary's origin
+     * (Radiance's srcignore and distglow): a radius-0 sky glow stays visible. */
+    int far_glow = m->type == RC_OBJ_GLOW && a[3] >= -RC_FTINY &&
+                   (distant || r->dist0 + h->pos.w > a[3]);
+    if (!far_glow) return (float3)(0.0f);
+  }
   if (rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR)) {
     /* Counted by the direct calculation already, except a glow beyond its radius of
-     * influence, or a glow that is no direct source at all. */
+     * influence along this ray (radius 0: no direct source at all); a glow of negative
+     * radius takes no part in illumination (Radiance's badcomponent and distglow). */
     if (m->type != RC_OBJ_GLOW) return (float3)(0.0f);
     float rmax = a[3];
-    if (rmax > RC_FTINY && !distant && h->pos.w <= rmax) return (float3)(0.0f);
+    if (!(rmax >= -RC_FTINY && (distant || h->pos.w > rmax))) return (float3)(0.0f);
   }
   if (m->type == RC_OBJ_SPOTLIGHT) {
     float3 sd = normalize((float3)(a[4], a[5], a[6]));
