@@ -712,7 +712,14 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
 #ifdef RADCL_HAS_PATTERNS
   if (mat.npatterns) rc_apply_patterns(S, &mat, r.dir.xyz, &h, &o->pcol, &o->pert);
 #endif
-  rc_apply_medium(o, &r, rc_hit_medium(S, o->cext, &mat, r.dir.xyz, &h), h.pos.w);
+  /* -i: primary rays (and their pure transmissions) meet diffuse irradiance meters; clear
+   * materials let them through unchanged, in the medium they came in (Radiance's raytirrad
+   * passes them before a dielectric could set its own). */
+  int irrad_i = (P->flags & RC_PF_IRRAD_I) &&
+                (kind == RC_RAY_PRIMARY || kind == RC_RAY_TRANSMITTED) && r.depth == 0 &&
+                !(rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR));
+  rc_apply_medium(o, &r, irrad_i ? o->cext : rc_hit_medium(S, o->cext, &mat, r.dir.xyz, &h),
+                  h.pos.w);
   float3 coef = r.coef.xyz;
   if (mat.type == RC_OBJ_ILLUM) { /* no alternate */
     if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
@@ -724,11 +731,8 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
   }
   if (h.pos.w < 0.0f) return; /* a distant source with a non-emitting material */
 
-  /* -i: primary rays (and their pure transmissions) meet diffuse irradiance meters; clear
-   * materials let them through unchanged. */
   int flat = surf.type == RC_OBJ_POLYGON || surf.type == RC_OBJ_RING;
-  if ((P->flags & RC_PF_IRRAD_I) && (kind == RC_RAY_PRIMARY || kind == RC_RAY_TRANSMITTED) &&
-      r.depth == 0 && !(rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR))) {
+  if (irrad_i) {
     if (rc_transparent(mat.type)) {
       rc_pass(o, &r, &h, P, key);
       return;

@@ -35,8 +35,9 @@ struct Scene {
     f << body;
   }
   ~Scene() { std::filesystem::remove(path); }
-  // Radiance of a ray, or irradiance at a -I sensor.
-  double value(render::PrimaryRay ray, bool sensor = false) {
+  // Radiance of a ray, or irradiance at a -I sensor (or, with `meters`, at the surface the
+  // ray hits: -i).
+  double value(render::PrimaryRay ray, bool sensor = false, bool meters = false) {
     scene::LoadedScene ls = scene::load_scene({path});
     render::RenderSettings st;
     st.ab = 0;
@@ -47,6 +48,7 @@ struct Scene {
     st.lw = 1e-9; // deterministic: no Russian roulette
     st.lr = 60;
     st.irradiance_I = sensor;
+    st.irradiance_i = meters;
     render::Renderer r(ls, st, device::default_context());
     std::vector<render::PrimaryResult> res(1);
     r.render(std::span(&ray, 1), res);
@@ -167,6 +169,22 @@ TEST(Dielectric, SunThroughSlabToSensorBelow) {
   // In: (1 - R) / n^2, absorbed over 1, out: (1 - R) n^2.
   double expect = kL * sun_solid_angle() * (1 - R) * (1 - R) * tn;
   double e = s.value({{0, 0, -0.5}, {0, 0, 1}, 0}, true);
+  EXPECT_NEAR(e, expect, 1e-3 * expect);
+}
+
+// -i: the view ray passes the slab straight (Radiance's raytirrad passes clear materials
+// before a dielectric could change the ray's medium) and meets a meter on the floor below,
+// which the sun reaches through the slab as above. The ray stays in the outside medium: it
+// had kept the slab's absorption, which made the meter's shadow ray to the sun black.
+TEST(Dielectric, IrradianceModePassesTheSlabInTheOutsideMedium) {
+  const double n = 1.5, tn = 0.8;
+  Scene s(slab("void dielectric water 0 0 5 0.8 0.8 0.8 1.5 0") +
+              "void plastic grey 0 0 5 0.5 0.5 0.5 0 0\n"
+              "grey polygon floor 0 0 12 -50 -50 -1  50 -50 -1  50 50 -1  -50 50 -1\n",
+          true);
+  double R = std::pow((1 - n) / (1 + n), 2);
+  double expect = kL * sun_solid_angle() * (1 - R) * (1 - R) * tn;
+  double e = s.value({{0.1, 0, 2}, {0, 0, -1}, 0}, false, true);
   EXPECT_NEAR(e, expect, 1e-3 * expect);
 }
 
