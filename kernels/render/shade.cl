@@ -401,7 +401,7 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
 /* Visible emission of a light-type material toward the ray (scene-format.md §3.6). */
 RC_NOINLINE
 static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, const rc_ray* r,
-                                const rc_hit* h, uint kind) {
+                                const rc_hit* h) {
   global const float* a = S->args + m->args;
   float3 rad = (float3)(a[0], a[1], a[2]);
   int distant = h->pos.w < 0.0f;
@@ -726,7 +726,7 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
     return;
   }
   if (mat.type == RC_OBJ_LIGHT || mat.type == RC_OBJ_GLOW || mat.type == RC_OBJ_SPOTLIGHT) {
-    o->immediate += rc_light_emission(S, &mat, &r, &h, kind) * coef * o->pcol;
+    o->immediate += rc_light_emission(S, &mat, &r, &h) * coef * o->pcol;
     return;
   }
   if (h.pos.w < 0.0f) return; /* a distant source with a non-emitting material */

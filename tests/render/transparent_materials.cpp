@@ -175,7 +175,7 @@ TEST(Dielectric, SunThroughSlabToSensorBelow) {
 // -i: the view ray passes the slab straight (Radiance's raytirrad passes clear materials
 // before a dielectric could change the ray's medium) and meets a meter on the floor below,
 // which the sun reaches through the slab as above. The ray stays in the outside medium: it
-// had kept the slab's absorption, which made the meter's shadow ray to the sun black.
+// had kept the slab's absorption, which dimmed the meter's shadow ray (to 0.0257 here).
 TEST(Dielectric, IrradianceModePassesTheSlabInTheOutsideMedium) {
   const double n = 1.5, tn = 0.8;
   Scene s(slab("void dielectric water 0 0 5 0.8 0.8 0.8 1.5 0") +
