@@ -8,19 +8,14 @@
 // (radius 0: no source, seen by ambient rays only) lies behind the illum, so an ambient ray that
 // wrongly passed would bring its 10 W/sr/m².
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <numbers>
 #include <string>
-#include <unistd.h>
 
-#include "radcl/device/context.h"
-#include "radcl/render/renderer.h"
-#include "test_env.h"
+#include "scene_dir.h"
 
 using namespace radcl;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -28,26 +23,13 @@ constexpr double kPi = std::numbers::pi;
 
 const char* kGlow = "void glow bright 0 0 4 10 10 10 0\n";
 
-class SourceVisibility : public ::testing::Test {
+class SourceVisibility : public test::SceneDir {
 protected:
-  fs::path dir_;
-  char cwd[4096];
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("radcl_srcvis_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir_.c_str()), 0);
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir_);
-  }
   // Red of one ray from `org` along `dir` (with `meter`, the irradiance at a meter at `org`
   // facing `dir`), with -ab `ab` -aa 0 and -dv as `dv`.
   double trace(const std::string& scene, int ab, const render::Vec3d& org, const render::Vec3d& dir,
                bool meter = true, bool dv = true) {
-    std::ofstream(dir_ / "scene.rad") << scene;
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
+    std::ofstream("scene.rad") << scene;
     render::RenderSettings st;
     st.ab = ab;
     st.ad = 256;
@@ -55,11 +37,7 @@ protected:
     st.lw = 1e-4;
     st.dv = dv;
     st.irradiance_I = meter;
-    render::Renderer r(ls, st, device::default_context());
-    std::vector<render::PrimaryRay> pr{{org, dir, 0}};
-    std::vector<render::PrimaryResult> res(1);
-    r.render(pr, res);
-    return res[0].value[0];
+    return render_rays("scene.rad", {{org, dir, 0}}, st)[0].value[0];
   }
   double meter(const std::string& scene, int ab, double z, double nz) {
     return trace(scene, ab, {0, 0, z}, {0, 0, nz});
