@@ -8,6 +8,8 @@
 #   bench     tests/bench/ambient_cache.sh on the GPU (Radiance alongside when it was bundled),
 #             the median of BENCH_REPEAT (default 3) runs per sensor case and rpict
 #   bench-cpu the same on PoCL with every core (NO_RADIANCE=1: radcl alone)
+#   cost      tests/bench/accuracy_cost.sh on the GPU: time and error along a ladder of ambient
+#             settings, Radiance alongside when it was bundled (BENCH_REPEAT default 3)
 #   rounds    office_clear's cache build on the GPU, its rounds' time by size
 #   cold      a first run on a machine that has compiled nothing (radcl's program cache and
 #             NVIDIA's ComputeCache emptied): one sensor, compiling the scene's program, then
@@ -127,6 +129,7 @@ for what in "$@"; do
   devices) RADCL_DEVICE=nvidia "$b/bin/radcl" devices --check ;;
   tests) RADCL_DEVICE=nvidia tests ;;
   bench) RADCL_DEVICE=nvidia BENCH_REPEAT=${BENCH_REPEAT:-3} "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
+  cost) RADCL_DEVICE=nvidia BENCH_REPEAT=${BENCH_REPEAT:-3} "$root/tests/bench/accuracy_cost.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/cost_gpu.txt" ;;
   bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;
   profile) profile 2>&1 | tee "$out/profile.txt" ;;
   cold) RADCL_DEVICE=nvidia cold 2>&1 | tee "$out/cold.txt" ;;
