@@ -935,24 +935,27 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
 }
 
 /* Per ray of the wave: its immediate contribution plus its unblocked shadow contributions and
- * direct estimates, in a fixed order. */
+ * direct estimates, in a fixed order. The host sends each shadow request as one float4 (rgb;
+ * w < 0 for a traced shadow ray, else an -dt estimate's count of tested requests before it),
+ * not the whole rc_shadow: the records were the bulk of a wave's transfers to a discrete GPU. */
 kernel void rc_accumulate(global const float4* immediate, global const uint* shadow_offset,
-                          global const rc_shadow* shadows, global const uchar* blocked, uint n,
+                          global const float4* contrib, global const uchar* blocked, uint n,
                           uint nshadows, global float4* total) {
   uint i = get_global_id(0);
   if (i >= n) return;
   uint end = i + 1 < n ? shadow_offset[i + 1] : nshadows;
   float3 sum = immediate[i].xyz;
   for (uint k = shadow_offset[i]; k < end; ++k) {
-    if (shadows[k].source != RC_NONE) {
-      if (!blocked[k]) sum += shadows[k].contrib.xyz;
+    float4 c = contrib[k];
+    if (c.w < 0.0f) {
+      if (!blocked[k]) sum += c.xyz;
       continue;
     }
     /* The estimate for untested samples (direct.cl), at the tested ones' hit ratio. */
-    uint nt = shadows[k].pad0, hits = 0;
+    uint nt = (uint)c.w, hits = 0;
     for (uint j = k - nt; j < k; ++j)
       hits += !blocked[j];
-    if (nt > 0u) sum += shadows[k].contrib.xyz * ((float)hits / (float)nt);
+    if (nt > 0u) sum += c.xyz * ((float)hits / (float)nt);
   }
   total[i] = (float4)(sum, 0.0f);
 }

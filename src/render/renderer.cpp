@@ -1220,19 +1220,26 @@ struct Renderer::Impl {
       return;
     }
     device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
-    device::Buffer& bshadows = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
 
     std::vector<rc_shadow> requested;
     if (settings.trace == RenderSettings::Trace::RaysAndShadows) requested = shadows;
     timed.stop();
     std::vector<std::uint8_t> blocked = trace_shadows(shadows);
     timed.start(Phase::Accumulate);
-    if (nshadow > 0) bshadows.write(shadows.data(), nshadow * sizeof(rc_shadow));
+    // rc_accumulate's view of a request: its contribution, w < 0 for a traced ray, else the
+    // -dt estimate's count of tested requests before it.
+    std::vector<rc_float4> contrib(nshadow);
+    for_rows(nshadow, [&](std::size_t k) {
+      const rc_shadow& q = shadows[k];
+      contrib[k] = q.contrib;
+      contrib[k].w = q.source != RC_NONE ? -1.0f : static_cast<float>(q.pad0);
+    });
+    device::Buffer& bcontrib = scratch(kShadows, contrib);
     device::Buffer& bblocked = scratch(kBlocked, blocked);
     device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
     accumulate.arg(0, bimm)
         .arg(1, bsoff)
-        .arg(2, bshadows)
+        .arg(2, bcontrib)
         .arg(3, bblocked)
         .arg(4, un)
         .arg(5, nshadow)
