@@ -42,12 +42,8 @@ case ${LADDER:-both} in
 esac
 
 sensors() { case $1 in luminaires*) echo luminaires_grid.pts ;; *) echo office_grid.pts ;; esac; }
-# Mean and worst relative luminance error of $1 against $2 (rgb per line).
-errs() {
-  paste "$1" "$2" | awk '{ a = .265*$1+.67*$2+.065*$3; b = .265*$4+.67*$5+.065*$6
-    e = (a - b) / b; if (e < 0) e = -e; s += e; if (e > m) m = e; n++ }
-    END { printf "%.2f%%, %.2f%%", 100 * s / n, 100 * m }'
-}
+# shellcheck source=tests/bench/sensor_errors.sh
+. "$root/tests/bench/sensor_errors.sh"
 timed() { # output-file command... ; prints seconds
   local out=$1; shift
   (cd "$scenes" && /usr/bin/time -f "%e" "$@" > "$out" 2> "$work/err") ||
@@ -66,7 +62,7 @@ for c in ${SCENES:-office_clear luminaires}; do
   done
 done
 
-echo "| scene | settings (-ab 5) | radcl s | Radiance s | speed-up | radcl error (mean, worst) | Radiance error |"
+echo "| scene | settings (-ab 5) | radcl s | Radiance s | speed-up | radcl error (mean worst) | Radiance error |"
 echo "|---|---|---:|---:|---:|---|---|"
 for c in ${SCENES:-office_clear luminaires}; do
   pts=$scenes/$(sensors "$c")

@@ -36,12 +36,8 @@ median() {
     END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
 ref_time() { awk -F'\t' -v n="$1" '$1 == n { print $2 }' "$times"; }
-# Mean and worst relative luminance error of $1 against $2 (rgb per line).
-errs() {
-  paste "$1" "$2" | awk '{ a = .265*$1+.67*$2+.065*$3; b = .265*$4+.67*$5+.065*$6
-    e = (a - b) / b; if (e < 0) e = -e; s += e; if (e > m) m = e; n++ }
-    END { printf "%.2f%% %.2f%%", 100 * s / n, 100 * m }'
-}
+# shellcheck source=tests/bench/sensor_errors.sh
+. "$root/tests/bench/sensor_errors.sh"
 run() { # output-file args... ; prints seconds
   local out=$1; shift
   ( cd "$scenes" && /usr/bin/time -f "%e" "$build/bin/rtrace" -n "$threads" -u- -h -I "$@" \
