@@ -141,10 +141,10 @@ bool serve_client(const std::string& dir, const std::string& progname, const Per
     return true;
   } catch (const FatalError& e) {
     std::fflush(stdout);
-    std::fprintf(stderr, "%s: fatal - %s\n", progname.c_str(), e.what());
+    std::fprintf(stderr, "%s: fatal - %s\n", program_name().c_str(), e.what());
   } catch (const std::exception& e) {
     std::fflush(stdout);
-    std::fprintf(stderr, "%s: internal error - %s\n", progname.c_str(), e.what());
+    std::fprintf(stderr, "%s: internal error - %s\n", program_name().c_str(), e.what());
   }
   return false;
 }
@@ -404,7 +404,7 @@ int run_persist_server(const std::string& path, const std::string& progname, Per
               job += c;
             if (!job.empty()) status = serve_client(job, progname, jobs) ? 0 : 1;
           } catch (const FatalError& e) {
-            std::fprintf(stderr, "%s: fatal - %s\n", progname.c_str(), e.what());
+            std::fprintf(stderr, "%s: fatal - %s\n", program_name().c_str(), e.what());
             status = 1;
           }
           std::fflush(nullptr);
@@ -457,7 +457,7 @@ int run_persist_server(const std::string& path, const std::string& progname, Per
       }
     }
   } catch (const FatalError& e) {
-    std::fprintf(stderr, "%s: fatal - %s\n", progname.c_str(), e.what());
+    std::fprintf(stderr, "%s: fatal - %s\n", program_name().c_str(), e.what());
     rc = 1;
   }
   if (warm_fd >= 0) ::close(warm_fd); // the idle job process sees the end and exits

@@ -361,13 +361,16 @@ int rpict_main(int argc, char** argv) {
   if (!server && !pfile.empty() && ::stat(pfile.c_str(), &pst) == 0)
     return cli::attach_persist(pfile, args[0]);
   options::RpictCommand cmd = options::parse_rpict_command_line(args, scene::find_on_raypath);
+  // Headers and messages name the command as Radiance does (fixargv0), expanded words after.
+  if (!cmd.args.empty()) cmd.args[0] = program_name();
   options::RpictOptions& opt = cmd.opt;
   if (cmd.action == options::ParsedCommand::Action::PrintDefaults) {
     std::fputs(options::format_rpict_defaults(opt).c_str(), stdout);
     return 0;
   }
   if (cmd.action == options::ParsedCommand::Action::PrintVersion) {
-    std::printf("radcl %s (rpict)\n", RADCL_VERSION);
+    // Radiance's form, "RADIANCE <release> ...": tools read the release from the second word.
+    std::printf("RADIANCE 5.4a radcl %s (rpict)\n", RADCL_VERSION);
     return 0;
   }
   if (!opt.error_file.empty() && !std::freopen(opt.error_file.c_str(), "a", stderr))
@@ -391,7 +394,7 @@ int rpict_main(int argc, char** argv) {
   // No octree argument: the octree comes on standard input (never with -S, whose views do).
   scene::LoadedScene ls = octree.empty() ? scene::load_octree_data(read_stdin(), "standard input")
                                          : scene::load_scene({octree});
-  Pictures pictures(cmd, args, ls);
+  Pictures pictures(cmd, cmd.args, ls); // the words as expanded: cmd.operand counts those
   cli::PersistJobs jobs;
   jobs.prepare = [&] { pictures.prepare(); };
   jobs.serve = [&] { pictures.run(); };

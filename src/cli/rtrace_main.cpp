@@ -362,12 +362,15 @@ int rtrace_main(int argc, char** argv) {
   if (!server && !pfile.empty() && ::stat(pfile.c_str(), &pst) == 0)
     return cli::attach_persist(pfile, args[0]);
   options::RtraceCommand cmd = options::parse_rtrace_command_line(args, scene::find_on_raypath);
+  // Headers and messages name the command as Radiance does (fixargv0), expanded words after.
+  if (!cmd.args.empty()) cmd.args[0] = program_name();
   if (cmd.action == options::ParsedCommand::Action::PrintDefaults) {
     std::fputs(options::format_rtrace_defaults(cmd.opt).c_str(), stdout);
     return 0;
   }
   if (cmd.action == options::ParsedCommand::Action::PrintVersion) {
-    std::printf("radcl %s (rtrace)\n", RADCL_VERSION);
+    // Radiance's form, "RADIANCE <release> ...": tools read the release from the second word.
+    std::printf("RADIANCE 5.4a radcl %s (rtrace)\n", RADCL_VERSION);
     return 0;
   }
   if (!cmd.opt.error_file.empty() && !std::freopen(cmd.opt.error_file.c_str(), "a", stderr))

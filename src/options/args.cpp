@@ -3,8 +3,10 @@
 #include "radcl/util/error.h"
 
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -124,23 +126,34 @@ ArgList::ArgList(int argc, const char* const* argv) {
 }
 
 void ArgList::expand(std::size_t i) {
-  while (i < args_.size() && !args_[i].empty() && (args_[i][0] == '@' || args_[i][0] == '$')) {
-    const std::string& arg = args_[i];
+  // Radiance expands until the word is plain, so a file that names itself never ends there;
+  // past this many nested expansions at one position it must be such a loop.
+  constexpr int kMaxNesting = 64;
+  for (int depth = 0;
+       i < args_.size() && !args_[i].empty() && (args_[i][0] == '@' || args_[i][0] == '$');
+       ++depth) {
+    const std::string arg = args_[i];
+    if (depth == kMaxNesting)
+      throw FatalError("cannot expand '" + arg + "': more than " + std::to_string(kMaxNesting) +
+                       " nested expansions (an option file that names itself?)");
     std::vector<std::string> words;
-    bool ok = false;
     if (arg[0] == '@') {
+      // As Radiance's wordfile(): words split at white space, quotes kept as they are.
+      errno = 0;
       std::ifstream in(arg.substr(1), std::ios::binary);
-      if (in && arg.size() > 1) {
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        words = split_words(ss.str());
-        ok = true;
+      if (arg.size() < 2 || !in) {
+        int err = errno;
+        throw SystemError("cannot expand '" + arg + "'" +
+                          (err > 0 ? std::string(": ") + std::strerror(err) : ""));
       }
+      std::ostringstream ss;
+      ss << in.rdbuf();
+      words = split_words(ss.str());
     } else if (const char* v = std::getenv(arg.c_str() + 1)) {
       words = split_words(v);
-      ok = true;
+    } else {
+      throw SystemError("cannot expand '" + arg + "'");
     }
-    if (!ok) throw FatalError("cannot expand '" + arg + "'");
     args_.erase(args_.begin() + static_cast<std::ptrdiff_t>(i));
     args_.insert(args_.begin() + static_cast<std::ptrdiff_t>(i), words.begin(), words.end());
   }

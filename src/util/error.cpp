@@ -1,5 +1,6 @@
 #include "radcl/util/error.h"
 
+#include <cctype>
 #include <cstdio>
 #include <exception>
 
@@ -25,17 +26,31 @@ const std::string& program_name() {
   return g_program;
 }
 
+std::string command_name(const std::string& argv0) {
+  std::string name = argv0.substr(argv0.find_last_of('/') + 1);
+  if (std::size_t dot = name.find('.'); dot != std::string::npos) name.resize(dot);
+  for (char& c : name)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return name;
+}
+
 int run_main(const char* progname, int (*body)(int, char**), int argc, char** argv) {
-  set_program_name(progname);
+  std::string name = argc > 0 && argv[0] ? command_name(argv[0]) : "";
+  set_program_name(name.empty() ? progname : name);
+  const char* me = program_name().c_str();
   try {
     return body(argc, argv);
+  } catch (const SystemError& e) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "%s: system - %s\n", me, e.what());
+    return 2;
   } catch (const FatalError& e) {
     std::fflush(stdout);
-    std::fprintf(stderr, "%s: fatal - %s\n", progname, e.what());
+    std::fprintf(stderr, "%s: fatal - %s\n", me, e.what());
     return 1;
   } catch (const std::exception& e) {
     std::fflush(stdout);
-    std::fprintf(stderr, "%s: internal error - %s\n", progname, e.what());
+    std::fprintf(stderr, "%s: internal error - %s\n", me, e.what());
     return 2;
   }
 }

@@ -96,14 +96,14 @@ TEST(Args, ExpandFileAndEnvironment) {
   try {
     bad.expand(1);
     FAIL();
-  } catch (const radcl::FatalError& e) {
+  } catch (const radcl::SystemError& e) { // Radiance's "system -" error, exit status 2
     EXPECT_STREQ(e.what(), "cannot expand '$RADCL_OPT_UNSET'");
   }
   try {
     bad.expand(2);
     FAIL();
   } catch (const radcl::FatalError& e) {
-    EXPECT_STREQ(e.what(), "cannot expand '@/nonexistent/file'");
+    EXPECT_STREQ(e.what(), "cannot expand '@/nonexistent/file': No such file or directory");
   }
   // An empty file expands to nothing.
   std::ofstream(f1, std::ios::trunc) << "  \n";
@@ -112,5 +112,38 @@ TEST(Args, ExpandFileAndEnvironment) {
   EXPECT_EQ(empty.words(), (std::vector<std::string>{"rtrace", "x.oct"}));
   std::remove(f1.c_str());
   std::remove(f2.c_str());
+  rmdir(dir);
+}
+
+// Words are split at white space as Radiance's wordfile() does: quotes stay in the words, any
+// number of words and lines expand, and a file that names itself stops with an error.
+TEST(Args, FileExpansionLimits) {
+  char dir[] = "/tmp/radcl_args_XXXXXX";
+  ASSERT_NE(mkdtemp(dir), nullptr);
+  const std::string many = std::string(dir) + "/many.opt", self = std::string(dir) + "/self.opt";
+  {
+    std::ofstream f(many);
+    f << "-av \"0.1 '0.2\"\n";
+    for (int i = 0; i < 5000; ++i)
+      f << "-ab " << i % 3 << (i % 7 == 0 ? "\n" : " ");
+  }
+  ArgList a({"rpict", "@" + many, "x.oct"});
+  a.expand(1);
+  ASSERT_EQ(a.size(), 1u + 3u + 10000u + 1u);
+  EXPECT_EQ(a[2], "\"0.1");
+  EXPECT_EQ(a[3], "'0.2\"");
+  EXPECT_EQ(a[a.size() - 2], "1"); // 4999 % 3
+  EXPECT_EQ(a[a.size() - 1], "x.oct");
+
+  std::ofstream(self) << "@" << self << "\n";
+  ArgList loop({"rtrace", "@" + self, "x.oct"});
+  try {
+    loop.expand(1);
+    FAIL();
+  } catch (const radcl::FatalError& e) {
+    EXPECT_NE(std::string(e.what()).find("nested expansions"), std::string::npos) << e.what();
+  }
+  std::remove(many.c_str());
+  std::remove(self.c_str());
   rmdir(dir);
 }

@@ -40,8 +40,9 @@ public:
   const std::string& operator[](std::size_t i) const { return args_[i]; }
   const std::vector<std::string>& words() const { return args_; }
 
-  // Expands position i until it is a plain word. Throws FatalError("cannot expand '<arg>'")
-  // for an unreadable file or an unset variable (Radiance reports it as a system error).
+  // Expands position i until it is a plain word. Throws SystemError("cannot expand '<arg>'",
+  // with the system's reason for a file) for an unreadable file or an unset variable, as
+  // Radiance does, and FatalError for expansions nested past a limit (a file naming itself).
   void expand(std::size_t i);
 
   // Radiance's badarg(): the words after position i match `types` ('i' integer, 'f' real,
