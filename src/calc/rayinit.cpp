@@ -1,24 +1,14 @@
-#include <filesystem>
-
 #include "radcl/calc/program.h"
 #include "radcl/util/error.h"
-
-#ifndef RADCL_SOURCE_LIB
-#define RADCL_SOURCE_LIB ""
-#endif
-#ifndef RADCL_INSTALL_LIB
-#define RADCL_INSTALL_LIB ""
-#endif
+#include "radcl/util/library_path.h"
 
 namespace radcl::calc {
 
+// Found as every function file is (RAYPATH, then radcl's own library), as Radiance finds it.
 std::string Program::rayinit_path() {
-  for (const char* dir : {RADCL_SOURCE_LIB, RADCL_INSTALL_LIB}) {
-    if (!*dir) continue;
-    std::filesystem::path p = std::filesystem::path(dir) / "rayinit.cal";
-    if (std::filesystem::exists(p)) return p.string();
-  }
-  throw FatalError("cannot find function file \"rayinit.cal\"");
+  std::string p = find_library_file("rayinit.cal");
+  if (p.empty()) throw FatalError("cannot find function file \"rayinit.cal\"");
+  return p;
 }
 
 void Program::load_rayinit() {

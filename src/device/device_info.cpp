@@ -57,6 +57,10 @@ const char* kind_name(DeviceKind k) {
 }
 
 std::vector<DeviceInfo> enumerate_devices() {
+  // PoCL links kernels with the system's `ld`, found on PATH: a program started with an empty
+  // environment (env -i, some job schedulers) would abort inside the driver. Give it the
+  // search path a shell would use.
+  ::setenv("PATH", "/usr/local/bin:/usr/bin:/bin", 0);
   cl_uint np = 0;
   cl_int st = clGetPlatformIDs(0, nullptr, &np);
   if (st == -1001 /* CL_PLATFORM_NOT_FOUND_KHR: the ICD loader found no vendor */ || np == 0)

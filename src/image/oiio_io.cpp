@@ -10,6 +10,7 @@
 #include "image_formats.h"
 #include "radcl/image/oiio_plugin.h"
 #include "radcl/util/error.h"
+#include "radcl/util/library_path.h"
 #include "radcl/util/program_folder.h"
 
 namespace radcl::image::detail {
@@ -21,8 +22,8 @@ struct Plugin {
   std::string error; // why it could not be opened
 };
 
-// The file RADCL_OIIO_PLUGIN names, else ../lib/ beside the program (the build tree), then
-// the installed library folder.
+// The file RADCL_OIIO_PLUGIN names, else the installed library folder beside the program,
+// then ../lib/ (the build tree).
 Plugin open_plugin() {
   Plugin p;
 #ifndef RADCL_WITH_OIIO
@@ -32,8 +33,8 @@ Plugin open_plugin() {
   if (const char* e = std::getenv("RADCL_OIIO_PLUGIN"); e && *e) {
     tries.emplace_back(e);
   } else {
-    tries.push_back(program_folder() + "/../lib/" RADCL_OIIO_PLUGIN_NAME);
-    tries.emplace_back(RADCL_INSTALL_PLUGIN_DIR "/" RADCL_OIIO_PLUGIN_NAME);
+    tries.push_back(installed_library_dir() + "/" RADCL_OIIO_PLUGIN_NAME);
+    tries.push_back(program_folder() + "/../lib/" RADCL_OIIO_PLUGIN_NAME); // the build tree
   }
   for (const std::string& f : tries) {
     void* h = ::dlopen(f.c_str(), RTLD_NOW | RTLD_LOCAL);

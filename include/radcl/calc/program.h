@@ -26,9 +26,9 @@ public:
                    const std::string& context = "");
   // Reads and loads a file ("<path>: cannot open" if it cannot be read).
   void load_file(const std::string& path, const std::string& context = "");
-  // Loads radcl's rayinit.cal (lib/) into the global context, as the renderers do first.
+  // Loads rayinit.cal into the global context, as the renderers do first.
   void load_rayinit();
-  // Where that file is: the source tree's lib/ for a build, else the installed one.
+  // Where that file is: on RAYPATH, else radcl's own library (util/library_path.h).
   static std::string rayinit_path();
 
   // Parses one expression (a scene string argument, a command-line expression).

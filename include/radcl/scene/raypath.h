@@ -7,7 +7,7 @@ namespace radcl::scene {
 
 // Radiance's getpath(): names starting with '/', '.' or '~' are used as given; otherwise each
 // RAYPATH entry is tried in order (empty entry = current directory; default ":/usr/local/lib/ray"),
-// then radcl's own lib/ (build tree, then install prefix). Returns "" when not found.
+// then radcl's own library (util/library_path.h). Returns "" when not found.
 std::string find_on_raypath(const std::string& name);
 
 } // namespace radcl::scene
