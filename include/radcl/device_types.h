@@ -33,24 +33,25 @@ typedef struct rc_float4 {
  * table lists them by name; readers map names, never rely on these numbers in files). */
 #define RADCL_OBJECT_TYPES(X)                                                                      \
   X(POLYGON, "polygon")                                                                            \
-  X(CONE, "cone") X(SPHERE, "sphere") X(TEXFUNC, "texfunc") X(RING, "ring") X(                     \
-      CYLINDER, "cylinder") X(INSTANCE, "instance") X(CUP, "cup") X(BUBBLE, "bubble")              \
-      X(TUBE, "tube") X(MESH, "mesh") X(ALIAS, "alias") X(PLASTIC, "plastic") X(METAL, "metal") X( \
-          GLASS, "glass") X(TRANS, "trans") X(DIELECTRIC, "dielectric") X(PLASTIC2, "plastic2")    \
-          X(METAL2, "metal2") X(TRANS2, "trans2") X(INTERFACE, "interface")                        \
-              X(PLASFUNC, "plasfunc") X(METFUNC, "metfunc") X(BRIGHTFUNC, "brightfunc") X(         \
-                  BRIGHTDATA, "brightdata") X(BRIGHTTEXT, "brighttext") X(COLORPICT, "colorpict")  \
-                  X(GLOW, "glow") X(SOURCE, "source") X(LIGHT, "light") X(ILLUM, "illum")          \
-                      X(SPOTLIGHT, "spotlight") X(MIST, "mist") X(MIRROR, "mirror")                \
-                          X(TRANSFUNC, "transfunc") X(BRTDFUNC, "BRTDfunc") X(BSDF, "BSDF")        \
-                              X(ABSDF, "aBSDF") X(PLASDATA, "plasdata") X(METDATA, "metdata")      \
-                                  X(TRANSDATA, "transdata") X(COLORFUNC, "colorfunc")              \
-                                      X(ANTIMATTER, "antimatter")                                  \
-                                          X(COLORDATA, "colordata") X(COLORTEXT, "colortext")      \
-                                              X(TEXDATA, "texdata") X(MIXFUNC, "mixfunc")          \
-                                                  X(MIXDATA, "mixdata") X(MIXTEXT, "mixtext")      \
-                                                      X(MIXPICT, "mixpict") X(PRISM1, "prism1")    \
-                                                          X(PRISM2, "prism2") X(ASHIK2, "ashik2")
+  X(CONE, "cone")                                                                                  \
+  X(SPHERE, "sphere") X(TEXFUNC, "texfunc") X(RING, "ring") X(CYLINDER, "cylinder") X(             \
+      INSTANCE, "instance") X(CUP, "cup") X(BUBBLE, "bubble") X(TUBE, "tube") X(MESH, "mesh")      \
+      X(ALIAS, "alias") X(PLASTIC, "plastic") X(METAL, "metal") X(GLASS, "glass") X(               \
+          TRANS, "trans") X(DIELECTRIC, "dielectric") X(PLASTIC2, "plastic2") X(METAL2, "metal2")  \
+          X(TRANS2, "trans2") X(INTERFACE, "interface") X(PLASFUNC, "plasfunc")                    \
+              X(METFUNC, "metfunc") X(BRIGHTFUNC, "brightfunc") X(BRIGHTDATA, "brightdata")        \
+                  X(BRIGHTTEXT, "brighttext") X(COLORPICT, "colorpict") X(GLOW, "glow")            \
+                      X(SOURCE, "source") X(LIGHT, "light") X(ILLUM, "illum")                      \
+                          X(SPOTLIGHT, "spotlight") X(MIST, "mist") X(MIRROR, "mirror")            \
+                              X(TRANSFUNC, "transfunc") X(BRTDFUNC, "BRTDfunc") X(BSDF, "BSDF")    \
+                                  X(ABSDF, "aBSDF") X(PLASDATA, "plasdata") X(METDATA, "metdata")  \
+                                      X(TRANSDATA, "transdata") X(COLORFUNC, "colorfunc")          \
+                                          X(ANTIMATTER, "antimatter") X(COLORDATA, "colordata")    \
+                                              X(COLORTEXT, "colortext") X(TEXDATA, "texdata")      \
+                                                  X(MIXFUNC, "mixfunc") X(MIXDATA, "mixdata")      \
+                                                      X(MIXTEXT, "mixtext") X(MIXPICT, "mixpict")  \
+                                                          X(PRISM1, "prism1") X(PRISM2, "prism2")  \
+                                                              X(ASHIK2, "ashik2")
 
 #define RADCL_ENUM_ENTRY(id, name) RC_OBJ_##id,
 enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
@@ -60,6 +61,7 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
  * centre, see geometry::SceneGeometry::centre()), so float keeps its precision far from the
  * world origin. "~0u" marks "none" in index fields. */
 #define RC_NONE 0xFFFFFFFFu
+#define RC_ALT_VOID 0xFFFFFFFEu /* rc_material.alt of a mirror whose alternate is `void` */
 /* rc_hit.surface of an -I measurement point: a diffuse irradiance meter facing rc_hit.nrm. */
 #define RC_SURF_IRRADIANCE 0xFFFFFFFEu
 
@@ -69,8 +71,9 @@ enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
 #define RC_RAY_TRANSMITTED 2u /* pure specular transmission */
 #define RC_RAY_SPECULAR 3u    /* sampled rough specular */
 #define RC_RAY_AMBIENT 4u     /* indirect diffuse sample */
-#define RC_RAY_AMBMISS 5u     /* not a ray: an irradiance-cache miss the host makes a record for
-                                 (org = point, dir = normal, coef.w = the hit ray's weight) */
+#define RC_RAY_AMBMISS                                                                             \
+  5u /* not a ray: an irradiance-cache miss the host makes a record for                            \
+        (org = point, dir = normal, coef.w = the hit ray's weight) */
 #define RC_RAY_KIND_MASK 7u
 /* Lineage bit: the ray descends from the primary hit's pure specular reflection, whose
  * contribution rtrace reports as "mirrored" (-o r, x, R, l). */
@@ -96,11 +99,11 @@ typedef struct rc_ray {
   rc_float4 org;
   rc_float4 dir;
   rc_float4 coef;
-  rc_u32 primary;       /* index of the primary ray this contribution belongs to */
-  rc_u32 depth;         /* reflection depth (Radiance's r->rlvl) */
-  rc_u32 flags;         /* RC_RAY_* kind */
-  rc_u32 sample;        /* sample index within its parent, keys the random numbers */
-  rc_u32 ambient_depth; /* ambient bounces taken so far (Radiance's r->rlvl for -ab) */
+  rc_u32 primary;               /* index of the primary ray this contribution belongs to */
+  rc_u32 depth;                 /* reflection depth (Radiance's r->rlvl) */
+  rc_u32 flags;                 /* RC_RAY_* kind */
+  rc_u32 sample;                /* sample index within its parent, keys the random numbers */
+  rc_u32 ambient_depth;         /* ambient bounces taken so far (Radiance's r->rlvl for -ab) */
   float cext_r, cext_g, cext_b; /* extinction per unit length of the medium it travels in */
   rc_u32 tally;  /* host tally its contributions add to (the primary's slot unless the host
                     splits the tree: hemisphere cells for -as, every ray in trace mode) */
@@ -125,12 +128,12 @@ typedef struct rc_ray {
 
 /* The host's answer for one ray of a wave (from Embree). */
 typedef struct rc_hit {
-  rc_float4 pos; /* hit point (re-centred), w = distance t; t < 0 for a miss (then surface is
-                    the distant source hit, if any) */
-  rc_float4 nrm; /* unit geometric normal in Radiance's orientation (not flipped), w unused */
-  rc_float4 uv;  /* x,y: triangle barycentrics or surface parameters; z,w: 0 from the host, set
-                    by the kernels from the ray before patterns see the hit: the ray's dist0,
-                    and of it the shadow segments (rc_shadow.sdist0) */
+  rc_float4 pos;  /* hit point (re-centred), w = distance t; t < 0 for a miss (then surface is
+                     the distant source hit, if any) */
+  rc_float4 nrm;  /* unit geometric normal in Radiance's orientation (not flipped), w unused */
+  rc_float4 uv;   /* x,y: triangle barycentrics or surface parameters; z,w: 0 from the host, set
+                     by the kernels from the ray before patterns see the hit: the ray's dist0,
+                     and of it the shadow segments (rc_shadow.sdist0) */
   rc_u32 surface; /* compiled surface; RC_NONE for a miss that hits no distant source */
   rc_u32 prim;    /* triangle within a polygon or mesh */
   rc_u32 source;  /* light-source index of the surface hit, else RC_NONE */
@@ -138,8 +141,9 @@ typedef struct rc_hit {
 } rc_hit;
 
 /* Surface flags. */
-#define RC_SURFF_NO_AMBIENT 1u /* -ae/-ai: its modifier is excluded (or not included), so its
-                                  hits take the ambient value -av instead of sampling */
+#define RC_SURFF_NO_AMBIENT                                                                        \
+  1u /* -ae/-ai: its modifier is excluded (or not included), so its                                \
+        hits take the ambient value -av instead of sampling */
 
 /* A surface as the kernels see it. */
 typedef struct rc_surface {
@@ -148,19 +152,20 @@ typedef struct rc_surface {
   rc_u32 source;   /* light-source index when the surface is a direct source, else RC_NONE */
   rc_u32 object;   /* the surface's object number (names for output) */
   rc_u32 flags;    /* RC_SURFF_* */
-  rc_u32 clip;  /* antimatter: the bit of its direct modifier in the rays' clip sets, 0 if no
-                   antimatter lists it */
-  rc_u32 slots; /* antimatter: the rays' crossing counters (bit k: counter k) that a transmission
-                   through this surface changes */
+  rc_u32 clip;     /* antimatter: the bit of its direct modifier in the rays' clip sets, 0 if no
+                      antimatter lists it */
+  rc_u32 slots;    /* antimatter: the rays' crossing counters (bit k: counter k) that a transmission
+                      through this surface changes */
   rc_u32 pad2;
 } rc_surface;
 
 /* A material or other modifier; its real arguments live in a float buffer at [args, args+nargs). */
 typedef struct rc_material {
-  rc_u32 type;  /* rc_object_type */
-  rc_u32 args;  /* offset into the argument buffer */
+  rc_u32 type; /* rc_object_type */
+  rc_u32 args; /* offset into the argument buffer */
   rc_u32 nargs;
-  rc_u32 alt;   /* alternate material of illum/mirror (RC_NONE = void), else RC_NONE */
+  rc_u32 alt;       /* alternate material of illum/mirror (illum: RC_NONE = none or void; mirror:
+                       RC_NONE = none, RC_ALT_VOID = void), else RC_NONE */
   rc_u32 patterns;  /* first of its patterns/textures in the pattern buffer */
   rc_u32 npatterns; /* how many apply (those between the surface and it, then its own) */
   rc_u32 back;      /* mixfunc: background material (RC_NONE = void; alt is the foreground, and
@@ -169,18 +174,19 @@ typedef struct rc_material {
                        pattern buffer (render/func_materials.h); unused otherwise */
 } rc_material;
 
-/* A pattern or texture (brightfunc, colorfunc, texfunc) or a mixture's coefficient (mixfunc): generated .cal functions that the
- * kernel's dispatcher rc_pattern_call() knows by number, its real arguments (A1..An) and its
- * world-to-function transform: 25 floats at `xform` in the argument buffer (the 4x3 affine map
- * from re-centred device coordinates, rows x y z then translation; the scale S; the 3x3
- * function-to-world rotation for texture vectors; the world origin in function coordinates). */
+/* A pattern or texture (brightfunc, colorfunc, texfunc) or a mixture's coefficient (mixfunc):
+ * generated .cal functions that the kernel's dispatcher rc_pattern_call() knows by number, its real
+ * arguments (A1..An) and its world-to-function transform: 25 floats at `xform` in the argument
+ * buffer (the 4x3 affine map from re-centred device coordinates, rows x y z then translation; the
+ * scale S; the 3x3 function-to-world rotation for texture vectors; the world origin in function
+ * coordinates). */
 typedef struct rc_pattern {
   rc_u32 type;    /* rc_object_type */
   rc_u32 func[3]; /* dispatcher numbers: colour (r, g, b; brightfunc uses [0]), texture x y z */
   rc_u32 args;    /* its real arguments in the argument buffer */
   rc_u32 nargs;
-  rc_u32 xform;   /* offset of its transform in the argument buffer */
-  rc_u32 object;  /* object number, for messages */
+  rc_u32 xform;  /* offset of its transform in the argument buffer */
+  rc_u32 object; /* object number, for messages */
 } rc_pattern;
 
 /* Mixtures (mixfunc, mixdata, mixpict). One whose sides reach materials is a material of type
@@ -202,26 +208,28 @@ typedef struct rc_pattern {
 #define RC_SRCF_ILLUM 1u /* illum: seen as its alternate by non-shadow rays */
 #define RC_SRCF_GLOW 2u  /* glow: lights only points within emit.w of it */
 #define RC_SRCF_SPOT 4u  /* spotlight: spot.xyz direction, spot.w = cos(half angle) */
-#define RC_SRCF_VIRTUAL 8u /* image of source `parent` in mirror `mirror` (surface = the mirror's) */
-#define RC_SRCF_FOLLOW 16u /* virtual: a shadow ray must go on from the mirror to the parent (the
-                              -dp pretest found the way partly blocked); otherwise meeting the
-                              mirror is enough */
+#define RC_SRCF_VIRTUAL                                                                            \
+  8u /* image of source `parent` in mirror `mirror` (surface = the mirror's) */
+#define RC_SRCF_FOLLOW                                                                             \
+  16u /* virtual: a shadow ray must go on from the mirror to the parent (the                       \
+         -dp pretest found the way partly blocked); otherwise meeting the                          \
+         mirror is enough */
 
 /* A light source for the direct calculation (Radiance's SRCREC). */
 typedef struct rc_source {
-  rc_float4 pos;  /* centre (re-centred) or direction (distant); w = radius */
-  rc_float4 axis; /* normal (flat) or axis (cylinder); w = area (flat), length (cylinder) or
-                     solid angle (distant) */
-  rc_float4 su;   /* flat: first in-plane half-extent vector of the sampling rectangle;
-                     w = inner radius of a ring */
-  rc_float4 sv;   /* flat: second in-plane half-extent vector */
-  rc_float4 emit; /* radiance (rgb) of the material; w = glow's maximum radius */
-  rc_float4 spot; /* spotlight direction (unit) and cos(half angle); w = -2 if not a spot */
-  rc_u32 kind;    /* RC_SRC_* */
-  rc_u32 flags;   /* RC_SRCF_* */
-  rc_u32 surface; /* compiled surface index (RC_NONE for distant sources) */
-  rc_u32 verts;   /* polygon: offset of its vertices (float4) in the vertex buffer */
-  rc_u32 nverts;  /* polygon: vertex count (0 for ring, sphere, cylinder, distant) */
+  rc_float4 pos;    /* centre (re-centred) or direction (distant); w = radius */
+  rc_float4 axis;   /* normal (flat) or axis (cylinder); w = area (flat), length (cylinder) or
+                       solid angle (distant) */
+  rc_float4 su;     /* flat: first in-plane half-extent vector of the sampling rectangle;
+                       w = inner radius of a ring */
+  rc_float4 sv;     /* flat: second in-plane half-extent vector */
+  rc_float4 emit;   /* radiance (rgb) of the material; w = glow's maximum radius */
+  rc_float4 spot;   /* spotlight direction (unit) and cos(half angle); w = -2 if not a spot */
+  rc_u32 kind;      /* RC_SRC_* */
+  rc_u32 flags;     /* RC_SRCF_* */
+  rc_u32 surface;   /* compiled surface index (RC_NONE for distant sources) */
+  rc_u32 verts;     /* polygon: offset of its vertices (float4) in the vertex buffer */
+  rc_u32 nverts;    /* polygon: vertex count (0 for ring, sphere, cylinder, distant) */
   float spot_focus; /* spotlight: distance of the virtual focus behind the centre */
   rc_u32 parent;    /* virtual: the source it images (itself possibly virtual), else RC_NONE */
   rc_u32 mirror;    /* virtual: the mirror (rc_mirror index) it is seen in, else RC_NONE */
@@ -247,7 +255,7 @@ typedef struct rc_shadow {
   rc_u32 primary;
   rc_u32 source; /* source index: the ray counts only if it reaches this source unblocked */
   rc_u32 pad0;   /* -dt estimate records: the number of tested requests before it */
-  rc_u32 pad1;
+  rc_u32 crtype; /* the ambient/specular ancestry bits of the ray it leaves (shade.cl's RC_CR_*) */
   rc_u32 clip;   /* antimatter state of the surface point it leaves (as rc_ray) */
   rc_u32 inside;
   float dist0;  /* length of the ray tree before its origin: the surface ray's dist0 plus that
@@ -256,10 +264,10 @@ typedef struct rc_shadow {
 } rc_shadow;
 
 /* Rendering settings the kernels read (from the -d*, -s*, -a*, -l* options). */
-#define RC_PF_DV 1u        /* -dv: sources visible to view rays */
-#define RC_PF_BV 2u        /* -bv: back faces visible */
-#define RC_PF_IRRAD_I 4u   /* -i: primary hits become diffuse irradiance meters */
-#define RC_PF_LOWDISC 8u   /* -u-: first-hit samples stratified over the primary ray ids */
+#define RC_PF_DV 1u      /* -dv: sources visible to view rays */
+#define RC_PF_BV 2u      /* -bv: back faces visible */
+#define RC_PF_IRRAD_I 4u /* -i: primary hits become diffuse irradiance meters */
+#define RC_PF_LOWDISC 8u /* -u-: first-hit samples stratified over the primary ray ids */
 typedef struct rc_params {
   rc_float4 av;     /* -av ambient value (rgb); w = -lw minimum ray weight */
   rc_float4 direct; /* -ds, -dj, -dt, -dc */
@@ -327,9 +335,9 @@ typedef struct rc_amb_sample {
 } rc_amb_sample;
 
 /* What rc_make_record says of a hemisphere besides the record. */
-#define RC_AMB_FAILED 0     /* no sample: no value */
+#define RC_AMB_FAILED 0      /* no sample: no value */
 #define RC_AMB_VALUE_ONLY -1 /* a value to use but no record to keep */
-#define RC_AMB_RECORD 1     /* a record */
+#define RC_AMB_RECORD 1      /* a record */
 /* rc_make_record's work-group: the items that share one hemisphere (fixed, so that its sums
  * are added in the same order on every device). */
 #define RC_AMR_GROUP 64u
@@ -350,36 +358,89 @@ typedef struct rc_rng_key {
 
 /* Every struct above with every field, for the host/device layout test (rc_float4's members
  * are vector components on the device, which have no address: only its size is compared). */
-#define RADCL_LAYOUT_STRUCTS(S)                                                                \
-  S(rc_float4) S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror)      \
-  S(rc_shadow) S(rc_pattern)                                                                                 \
-  S(rc_rng_key) S(rc_params) S(rc_amb_record) S(rc_amb_node) S(rc_amb_hemi)          \
-  S(rc_amb_sample) S(rc_amb_made)
-#define RADCL_LAYOUT_FIELDS(F)                                                                 \
-  F(rc_ray, org) F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth)            \
-  F(rc_ray, flags) F(rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, pad2)                  \
-  F(rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim)               \
-  F(rc_hit, source) F(rc_hit, front)                                                           \
-  F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(rc_surface, object)      \
-  F(rc_surface, flags) F(rc_surface, clip) F(rc_surface, slots) F(rc_surface, pad2)                                                     \
-  F(rc_material, type) F(rc_material, args) F(rc_material, nargs) F(rc_material, alt) F(rc_material, patterns) F(rc_material, npatterns) F(rc_material, back) F(rc_material, func) F(rc_pattern, type) F(rc_pattern, args) F(rc_pattern, nargs) F(rc_pattern, xform) F(rc_pattern, object)          \
-  F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(rc_source, emit)    \
-  F(rc_source, spot) F(rc_source, kind) F(rc_source, flags) F(rc_source, surface)              \
-  F(rc_source, verts) F(rc_source, nverts) F(rc_source, spot_focus) F(rc_source, parent)       \
-  F(rc_source, mirror) F(rc_mirror, plane) F(rc_mirror, centre) F(rc_mirror, refl)             \
-  F(rc_mirror, surface) F(rc_mirror, verts) F(rc_mirror, nverts) F(rc_mirror, pad0)            \
-  F(rc_shadow, org) F(rc_shadow, dir) F(rc_shadow, contrib) F(rc_shadow, cext) F(rc_shadow, primary)              \
-  F(rc_shadow, source) F(rc_shadow, pad0) F(rc_shadow, pad1) F(rc_shadow, clip) F(rc_shadow, inside) F(rc_shadow, dist0) F(rc_shadow, sdist0)                                   \
-  F(rc_rng_key, primary) F(rc_rng_key, sample) F(rc_rng_key, depth) F(rc_rng_key, seed)    \
-  F(rc_params, av) F(rc_params, direct) F(rc_params, spec) F(rc_params, seed)                  \
-  F(rc_params, lr) F(rc_params, flags) F(rc_params, ab) F(rc_params, nsources)                 \
-  F(rc_params, irradiance_material) F(rc_params, ad) F(rc_params, as) F(rc_params, amb)       \
-  F(rc_amb_record, pos) F(rc_amb_record, nrm) F(rc_amb_record, udir) F(rc_amb_record, val)     \
-  F(rc_amb_record, grad) F(rc_amb_node, lo) F(rc_amb_node, hi) F(rc_amb_node, skip)            \
-  F(rc_amb_node, first) F(rc_amb_node, count) F(rc_amb_node, bin)              \
-  F(rc_amb_hemi, pos) F(rc_amb_hemi, nrm) F(rc_amb_hemi, ux) F(rc_amb_hemi, uy)                \
-  F(rc_amb_hemi, first) F(rc_amb_hemi, ns) F(rc_amb_hemi, level) F(rc_amb_hemi, pad0)          \
-  F(rc_amb_sample, val) F(rc_amb_sample, pnt) F(rc_amb_made, corral) F(rc_amb_made, status)    \
-  F(rc_amb_made, pad0) F(rc_amb_made, pad1)
+#define RADCL_LAYOUT_STRUCTS(S)                                                                    \
+  S(rc_float4)                                                                                     \
+  S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror) S(rc_shadow)          \
+      S(rc_pattern) S(rc_rng_key) S(rc_params) S(rc_amb_record) S(rc_amb_node) S(rc_amb_hemi)      \
+          S(rc_amb_sample) S(rc_amb_made)
+#define RADCL_LAYOUT_FIELDS(F)                                                                                         \
+  F(rc_ray, org)                                                                                                       \
+  F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags) F(                               \
+      rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip)                      \
+      F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, pad2) F(rc_hit, pos) F(                             \
+          rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim) F(rc_hit, source)                              \
+          F(rc_hit, front) F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(                        \
+              rc_surface, object) F(rc_surface, flags) F(rc_surface, clip) F(rc_surface, slots)                        \
+              F(rc_surface, pad2) F(rc_material, type) F(rc_material, args) F(                                         \
+                  rc_material, nargs) F(rc_material, alt)                                                              \
+                  F(rc_material, patterns) F(rc_material, npatterns) F(rc_material, back) F(                           \
+                      rc_material, func) F(rc_pattern,                                                                 \
+                                           type) F(rc_pattern,                                                         \
+                                                   args) F(rc_pattern,                                                 \
+                                                           nargs) F(rc_pattern,                                        \
+                                                                    xform) F(rc_pattern, object)                       \
+                      F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(                        \
+                          rc_source, emit) F(rc_source, spot)                                                          \
+                          F(rc_source, kind) F(rc_source, flags) F(rc_source, surface) F(                              \
+                              rc_source,                                                                               \
+                              verts) F(rc_source,                                                                      \
+                                       nverts) F(rc_source, spot_focus)                                                \
+                              F(rc_source, parent) F(rc_source, mirror) F(rc_mirror, plane) F(                         \
+                                  rc_mirror,                                                                           \
+                                  centre) F(rc_mirror, refl)                                                           \
+                                  F(rc_mirror, surface) F(rc_mirror, verts) F(rc_mirror, nverts) F(rc_mirror, pad0) F( \
+                                      rc_shadow, org) F(rc_shadow, dir)                                                \
+                                      F(rc_shadow, contrib) F(rc_shadow, cext) F(                                      \
+                                          rc_shadow,                                                                   \
+                                          primary) F(rc_shadow,                                                        \
+                                                     source) F(rc_shadow,                                              \
+                                                               pad0) F(rc_shadow, crtype)                              \
+                                          F(rc_shadow, clip) F(                                                        \
+                                              rc_shadow, inside) F(rc_shadow,                                          \
+                                                                   dist0) F(rc_shadow, sdist0)                         \
+                                              F(rc_rng_key, primary) F(rc_rng_key, sample) F(                          \
+                                                  rc_rng_key,                                                          \
+                                                  depth) F(rc_rng_key,                                                 \
+                                                           seed) F(rc_params,                                          \
+                                                                   av) F(rc_params, direct)                            \
+                                                  F(rc_params, spec) F(rc_params, seed) F(                             \
+                                                      rc_params, lr) F(rc_params,                                      \
+                                                                       flags) F(rc_params, ab)                         \
+                                                      F(rc_params, nsources) F(                                        \
+                                                          rc_params,                                                   \
+                                                          irradiance_material) F(rc_params, ad)                        \
+                                                          F(rc_params, as) F(rc_params, amb) F(                        \
+                                                              rc_amb_record,                                           \
+                                                              pos) F(rc_amb_record,                                    \
+                                                                     nrm) F(rc_amb_record, udir)                       \
+                                                              F(rc_amb_record,                                         \
+                                                                val) F(rc_amb_record,                                  \
+                                                                       grad) F(rc_amb_node,                            \
+                                                                               lo) F(rc_amb_node,                      \
+                                                                                     hi) F(rc_amb_node, skip)          \
+                                                                  F(rc_amb_node, first) F(                             \
+                                                                      rc_amb_node,                                     \
+                                                                      count) F(rc_amb_node,                            \
+                                                                               bin) F(rc_amb_hemi, pos)                \
+                                                                      F(                                               \
+                                                                          rc_amb_hemi,                                 \
+                                                                          nrm) F(rc_amb_hemi,                          \
+                                                                                 ux) F(rc_amb_hemi,                    \
+                                                                                       uy) F(rc_amb_hemi,              \
+                                                                                             first)                    \
+                                                                          F(rc_amb_hemi, ns) F(                        \
+                                                                              rc_amb_hemi,                             \
+                                                                              level) F(rc_amb_hemi,                    \
+                                                                                       pad0)                           \
+                                                                              F(rc_amb_sample, val) F(                 \
+                                                                                  rc_amb_sample,                       \
+                                                                                  pnt) F(rc_amb_made,                  \
+                                                                                         corral)                       \
+                                                                                  F(rc_amb_made,                       \
+                                                                                    status)                            \
+                                                                                      F(rc_amb_made,                   \
+                                                                                        pad0)                          \
+                                                                                          F(rc_amb_made,               \
+                                                                                            pad1)
 
 #endif /* RADCL_DEVICE_TYPES_H */

@@ -88,7 +88,6 @@ static void rc_direct_select(global rc_shadow* g, uint n, float known, const rc_
   e.contrib = (float4)(rest, 0.0f);
   e.source = RC_NONE;
   e.pad0 = nt;
-  e.pad1 = 0u;
   g[nt] = e;
   e.contrib = (float4)(0.0f);
   e.pad0 = 0u;

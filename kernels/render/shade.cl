@@ -175,7 +175,8 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
     s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
-    s.pad0 = s.pad1 = 0;
+    s.pad0 = 0;
+    s.crtype = rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR);
     s.dist0 = o->dist;
     s.sdist0 = 0.0f;
     s.clip = r->clip;
@@ -410,8 +411,8 @@ static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, co
     /* -dv-: sources are black to every ray (shadow rays are not shaded here), except a glow
      * beyond its radius of influence along the whole path from the primary's origin
      * (Radiance's srcignore and distglow): a radius-0 sky glow stays visible. */
-    int far_glow = m->type == RC_OBJ_GLOW && a[3] >= -RC_FTINY &&
-                   (distant || r->dist0 + h->pos.w > a[3]);
+    int far_glow =
+        m->type == RC_OBJ_GLOW && a[3] >= -RC_FTINY && (distant || r->dist0 + h->pos.w > a[3]);
     if (!far_glow) return (float3)(0.0f);
   }
   if (rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR)) {
@@ -700,6 +701,20 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
   const rc_params* P = &S->params;
   uint kind = r.flags & RC_RAY_KIND_MASK;
   rc_surface surf = *sp;
+#ifdef RADCL_HAS_MIRROR
+  /* A mirror with an alternate looks like that material to every ray but those that its
+   * virtual sources account for: ambient and specular rays (or their descendants) meeting its
+   * front still see the mirror (m_mirror). `void`: such rays go through. */
+  if (mat.type == RC_OBJ_MIRROR && mat.alt != RC_NONE &&
+      !(h.front && (rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR)))) {
+    if (mat.alt == RC_ALT_VOID) {
+      rc_apply_medium(o, &r, o->cext, h.pos.w);
+      if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
+      return;
+    }
+    mat = S->materials[mat.alt];
+  }
+#endif
   /* illum: a source for shadow rays aimed at it, otherwise its alternate material (or
    * nothing: the ray passes through). An ambient or specular ray (or one descended from one)
    * meeting its front side sees black, as at any light source: the direct calculation
@@ -1037,6 +1052,13 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       }
     }
 #endif
+#ifdef RADCL_HAS_MIRROR
+    /* Another mirror (or this one aimed elsewhere) with an alternate: as for other rays, the
+     * alternate decides, unless an ambient or specular ray's shadow meets its front (then, as
+     * without one, the mirror blocks it). A `void` alternate lets it through (the switch). */
+    int mirror_alt = m.type == RC_OBJ_MIRROR && m.alt != RC_NONE && !(h->front && s->crtype);
+    if (mirror_alt && m.alt != RC_ALT_VOID) m = S->materials[m.alt];
+#endif
     if (m.type == RC_OBJ_ILLUM) {
       /* An illum or glow source is not seen through the front of another illum. */
       if (src->surface != RC_NONE && (src->flags & (RC_SRCF_ILLUM | RC_SRCF_GLOW)) && h->front)
@@ -1055,6 +1077,11 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
     switch (m.type) {
     case RC_OBJ_ILLUM: /* without an alternate: invisible */
       break;
+#ifdef RADCL_HAS_MIRROR
+    case RC_OBJ_MIRROR: /* blocks, unless its alternate is `void` */
+      pass = mirror_alt && m.alt == RC_ALT_VOID;
+      break;
+#endif
 #ifdef RADCL_HAS_MIXFUNC
     case RC_OBJ_MIXFUNC:
       coef = rc_shadow_mix(S, &m, d, h);

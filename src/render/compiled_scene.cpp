@@ -121,6 +121,8 @@ private:
                       const geometry::Placement*>,
            std::uint32_t>
       mixtures_;
+  // Illum and mirror materials with their alternate's patterns: (material, alternate) -> copy.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> alternates_;
 
   // Whether the pattern records of `sd` are placed by `pl` (inside its instance or mesh).
   static bool placed_by(const scene::SceneDescription& sd, const geometry::Placement& pl) {
@@ -142,9 +144,46 @@ private:
     if (in_mixture && mo.type == RC_OBJ_ANTIMATTER)
       throw FatalError("material type \"antimatter\" of \"" + mo.name +
                        "\" in a mixture is not supported yet");
-    std::vector<std::int32_t> own = walk_texture(sd, w.material, surface);
+    std::vector<std::int32_t> own = walk_texture(sd, w.texture_owner, surface);
     prog.insert(prog.end(), own.begin(), own.end());
-    return patterned(sd, w.material, prog, pl);
+    return with_alternate(sd, w.material, patterned(sd, w.material, prog, pl), pl);
+  }
+
+  // The alternate material named by illum or mirror `obj` (Radiance's lastmod() of its string
+  // argument), or kVoid for none or `void`. Fatal: a name with no definition before it.
+  static std::int32_t alternate_of(const scene::SceneDescription& sd, std::int32_t obj) {
+    const scene::Object& o = sd.objects[obj];
+    if ((o.type != RC_OBJ_ILLUM && o.type != RC_OBJ_MIRROR) || o.sargs.empty() ||
+        o.sargs[0] == "void")
+      return scene::kVoid;
+    std::int32_t a = sd.last_modifier(obj, o.sargs[0]);
+    if (a == scene::kVoid)
+      throw FatalError("undefined alternate material \"" + o.sargs[0] + "\" for " +
+                       std::string(scene::type_name(o.type)) + " \"" + o.name + "\"");
+    return a;
+  }
+
+  // Compiled material `id` (of illum or mirror `m`) with its alternate shaded as Radiance's
+  // rayshade() does from the alternate's name: the patterns of that walk apply, placed by `pl`.
+  std::uint32_t with_alternate(const scene::SceneDescription& sd, std::int32_t m, std::uint32_t id,
+                               const geometry::Placement& pl) {
+    std::int32_t a = id == RC_NONE ? scene::kVoid : alternate_of(sd, m);
+    if (a == scene::kVoid) return id;
+    const std::string what =
+        std::string(scene::type_name(sd.objects[m].type)) + " \"" + sd.objects[m].name + "\"";
+    std::uint32_t alt = chain_end(sd, walk_chain(sd, a, what), {}, pl, what, true);
+    if (alt != RC_NONE && out_.materials[alt].type == RC_OBJ_MIXFUNC)
+      throw FatalError("alternate material \"" + sd.objects[a].name + "\" of " + what +
+                       ": a mixture there is not supported yet");
+    if (alt == out_.materials[id].alt) return id;
+    auto key = std::make_pair(id, alt);
+    if (auto it = alternates_.find(key); it != alternates_.end()) return it->second;
+    rc_material copy = out_.materials[id];
+    copy.alt = alt;
+    out_.materials.push_back(copy);
+    auto idx = static_cast<std::uint32_t>(out_.materials.size() - 1);
+    alternates_[key] = idx;
+    return idx;
   }
 
   // A mixture with a material on a side, met after the pattern program `prefix` (Radiance's
@@ -206,8 +245,8 @@ private:
     bool placed = placed_by(sd, pl);
     static const std::array<std::array<double, 4>, 4> id{
         {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
-    bool func = out_.materials[base].func != RC_NONE && placed &&
-                (pl.to_world != id || pl.scale != 1.0);
+    bool func =
+        out_.materials[base].func != RC_NONE && placed && (pl.to_world != id || pl.scale != 1.0);
     if (prog.empty() && !func) return base;
     auto key = std::make_tuple(&sd, m, prog, placed ? &pl : nullptr);
     if (auto it = patterned_.find(key); it != patterned_.end()) return it->second;
@@ -336,16 +375,13 @@ private:
     if (!real_count_ok(o.type, o.fargs.size()))
       throw FatalError("bad number of real arguments for " + std::string(scene::type_name(o.type)) +
                        " \"" + o.name + "\"");
-    // illum and mirror name an alternate material for rays other than their own purpose.
+    // illum and mirror name an alternate material for rays other than their own purpose
+    // (its patterns are added where a surface's walk places it: with_alternate()).
     std::uint32_t alt = RC_NONE;
-    if ((o.type == RC_OBJ_ILLUM || o.type == RC_OBJ_MIRROR) && !o.sargs.empty() &&
-        o.sargs[0] != "void") {
-      std::int32_t a = sd.last_modifier(obj, o.sargs[0]);
-      if (a == scene::kVoid)
-        throw FatalError("undefined alternate material \"" + o.sargs[0] + "\" for " +
-                         std::string(scene::type_name(o.type)) + " \"" + o.name + "\"");
-      alt = material(sd, scene::alias_target(sd, a));
-    }
+    if (std::int32_t a = alternate_of(sd, obj); a != scene::kVoid)
+      alt = material(sd, scene::first_material_from(sd, a));
+    else if (o.type == RC_OBJ_MIRROR && !o.sargs.empty()) // `void`: the mirror disappears
+      alt = RC_ALT_VOID;
     out_.features.add(o.type);
     std::uint32_t id =
         push_material(o.type, std::vector<float>(o.fargs.begin(), o.fargs.end()), alt);

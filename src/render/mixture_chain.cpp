@@ -21,12 +21,19 @@ ChainWalk walk(const scene::SceneDescription& sd, std::int32_t mod, const std::s
   ChainWalk out;
   // Modifiers name earlier objects, so a longer chain than the object count must loop.
   for (std::size_t steps = 0; mod != scene::kVoid && steps <= sd.objects.size(); ++steps) {
+    const scene::Object& a = sd.objects[mod];
+    if (a.type == RC_OBJ_ALIAS && a.sargs.empty()) { // pass-through: as if not in the chain
+      mod = a.modifier;
+      continue;
+    }
+    // A named alias is a copy of its target with the alias's own modifier (m_alias).
     std::int32_t t = scene::alias_target(sd, mod);
     if (t == scene::kVoid) break;
     const scene::Object& o = sd.objects[t];
     const auto type = static_cast<rc_object_type>(o.type);
     if (scene::is_material(type)) {
       out.material = t;
+      out.texture_owner = mod;
       return out;
     }
     if (!PatternCompiler::supported(type)) throw FatalError(where(o) + " is not supported yet");
@@ -40,7 +47,7 @@ ChainWalk walk(const scene::SceneDescription& sd, std::int32_t mod, const std::s
       bool shades = fore.material != scene::kVoid || fore.mixture != scene::kVoid ||
                     back.material != scene::kVoid || back.mixture != scene::kVoid;
       if (shades) { // the de facto material: raymixture() returns 1
-        if (o.modifier != scene::kVoid) throw FatalError(where(o) + ": inappropriate modifier");
+        if (a.modifier != scene::kVoid) throw FatalError(where(o) + ": inappropriate modifier");
         out.mixture = t;
         return out;
       }
@@ -84,9 +91,9 @@ ChainWalk walk_chain(const scene::SceneDescription& sd, std::int32_t mod,
   return walk(sd, mod, surface, 0);
 }
 
-std::vector<std::int32_t> walk_texture(const scene::SceneDescription& sd, std::int32_t material,
+std::vector<std::int32_t> walk_texture(const scene::SceneDescription& sd, std::int32_t owner,
                                        const std::string& surface) {
-  ChainWalk w = walk(sd, sd.objects[material].modifier, surface, 0);
+  ChainWalk w = walk(sd, sd.objects[owner].modifier, surface, 0);
   std::int32_t conflict = w.material != scene::kVoid ? w.material : w.mixture;
   if (conflict != scene::kVoid)
     throw FatalError(surface + ": conflicting material \"" + sd.objects[conflict].name + "\"");

@@ -25,6 +25,9 @@ struct ChainWalk {
   std::vector<std::int32_t> program;    // patterns (object numbers) and marked mixtures, in order
   std::int32_t material = scene::kVoid; // the material the walk reaches, or
   std::int32_t mixture = scene::kVoid;  // the mixture with a material on a side that ends it
+  // Whose modifiers the material's raytexture() walks: the material's own, or those of the
+  // named alias that stands for it (Radiance's m_alias gives the copy the alias's modifier).
+  std::int32_t texture_owner = scene::kVoid;
 };
 
 // The walk of rayshade() from modifier `mod` of `sd`. `surface` names the surface for messages
@@ -34,9 +37,10 @@ struct ChainWalk {
 ChainWalk walk_chain(const scene::SceneDescription& sd, std::int32_t mod,
                      const std::string& surface);
 
-// The walk of raytexture() over material `material`'s own modifiers: patterns and pattern-only
-// mixtures; a material or a mixture with one met there is fatal "conflicting material".
-std::vector<std::int32_t> walk_texture(const scene::SceneDescription& sd, std::int32_t material,
+// The walk of raytexture() over the modifiers of `owner` (a material, or the named alias
+// standing for one): patterns and pattern-only mixtures; a material or a mixture with one met
+// there is fatal "conflicting material".
+std::vector<std::int32_t> walk_texture(const scene::SceneDescription& sd, std::int32_t owner,
                                        const std::string& surface);
 
 // The modifiers a mixture names as foreground and background (kVoid for "void"). Fatal: too few
