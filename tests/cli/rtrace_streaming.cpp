@@ -107,3 +107,25 @@ TEST(RtraceStreaming, BuildingACacheAnswersAtFlushPoints) {
   }
   EXPECT_EQ(p.finish(), 0);
 }
+
+// A tool driving rtrace with its options in a file and -x N (no -y): every N rays are answered
+// before it sends more.
+TEST(RtraceStreaming, FlushesEveryXRays) {
+  const std::string opt = "/tmp/radcl_stream_" + std::to_string(getpid()) + ".opt";
+  {
+    std::FILE* f = std::fopen(opt.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("-h\n-I\n-ab 0\n-u-\n", f);
+    std::fclose(f);
+  }
+  const std::string rtrace = radcl::test::bin_dir() + "/rtrace";
+  const std::string two = "1.5 1.5 0.75 0 0 1\n4 3 0.75 0 0 1\n";
+  CoProcess p(radcl::test::data("scenes"), {rtrace, "@" + opt, "-x", "2", "luminaires.oct"});
+  for (int round = 0; round < 2; ++round) {
+    ASSERT_EQ(write(p.to, two.data(), two.size()), static_cast<ssize_t>(two.size()));
+    for (int k = 0; k < 2; ++k)
+      ASSERT_FALSE(p.read_line(60000).empty()) << "round " << round << ", answer " << k;
+  }
+  EXPECT_EQ(p.finish(), 0);
+  std::remove(opt.c_str());
+}
