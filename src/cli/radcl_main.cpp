@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
+#include "radcl/options/args.h"
 #include "radcl/util/error.h"
 #include "radcl_commands.h"
 
@@ -16,7 +18,18 @@ void usage() {
   std::fprintf(stderr, "  %-10s %s\n", "version", "print the version");
 }
 
-int radcl_main(int argc, char** argv) {
+int radcl_main(int argc0, char** argv0) {
+  // Option files and variables expand as in rtrace and rpict (options/args.h), anywhere.
+  radcl::options::ArgList args(argc0, argv0);
+  for (std::size_t i = 1; i < args.size(); ++i)
+    args.expand(i);
+  std::vector<std::string> words = args.words();
+  std::vector<char*> ptrs;
+  for (std::string& w : words)
+    ptrs.push_back(w.data());
+  ptrs.push_back(nullptr);
+  const int argc = static_cast<int>(words.size());
+  char** argv = ptrs.data();
   if (argc < 2) {
     usage();
     return 1;

@@ -116,3 +116,15 @@ TEST_F(CommandConventions, OptionFilesAnyLength) {
   txt >> r >> g >> b;
   EXPECT_GT(g, 0.0);
 }
+
+// radcl's own commands expand option files the same way.
+TEST_F(CommandConventions, RadclToolExpandsOptionFiles) {
+  const std::string room = radcl::test::source_dir() + "/scenes/room.rad";
+  const std::string opt = (dir / "scene.opt").string();
+  std::ofstream(opt) << "scene\n" << room << "\n";
+  std::string direct, expanded, err;
+  ASSERT_EQ(run(bin_dir() + "/radcl scene " + room, &direct, &err), 0) << err;
+  ASSERT_EQ(run(bin_dir() + "/radcl @" + opt, &expanded, &err), 0) << err;
+  EXPECT_EQ(expanded, direct);
+  EXPECT_NE(direct.find("polygon"), std::string::npos) << direct;
+}
