@@ -5,7 +5,7 @@
 # the reference results the benchmarks read. With RADIANCE_BIN set, Radiance's rtrace and rpict
 # from there (and the .cal files of the folders in RADIANCE_LIB, a
 # colon list) go along for same-machine comparisons; they
-# stay outside the repository. Build with -DRADCL_WITH_OIIO=OFF: OpenImageIO is not carried.
+# stay outside the repository (with oconv and vwrays for tests/bench/peers.sh). Build with -DRADCL_WITH_OIIO=OFF: OpenImageIO is not carried.
 #
 # usage: scripts/device-bundle.sh [build-dir]      then scripts/device-run.sh on the device
 set -euo pipefail
@@ -16,6 +16,9 @@ stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 mkdir -p "$stage"/{bin,lib,ref,radiance}
 cp "$build"/bin/{radcl,rtrace,rpict,gensky} "$stage/bin/"
+for t in "$build"/bin/bench_{gen_scenes,picture_mean}; do # tests/bench/peers.sh's helpers
+  if [ -e "$t" ]; then cp "$t" "$stage/bin/"; fi
+done
 for t in "$build"/bin/test_{render,cli,device,calc,ambient}_*; do
   if [ -e "$t" ]; then cp "$t" "$stage/bin/"; fi # a build of the programs alone has none
 done
@@ -27,6 +30,9 @@ ldd "$build"/bin/{radcl,rtrace,rpict} $(ls "$build"/bin/test_render_golden_ambie
 cp -r "$ref/results" "$stage/ref/"
 if [ -n "${RADIANCE_BIN:-}" ]; then
   cp "$RADIANCE_BIN"/{rtrace,rpict} "$stage/radiance/"
+  for p in oconv vwrays; do # peers.sh: the open-plan octrees, rays from a view
+    if [ -e "$RADIANCE_BIN/$p" ]; then cp "$RADIANCE_BIN/$p" "$stage/radiance/"; fi
+  done
   IFS=: read -ra libs <<< "${RADIANCE_LIB:-}"
   for d in "${libs[@]}"; do cp "$d"/*.cal "$stage/radiance/" 2>/dev/null || true; done
 fi

@@ -8,6 +8,9 @@
 #   bench     tests/bench/ambient_cache.sh on the GPU (Radiance alongside when it was bundled),
 #             the median of BENCH_REPEAT (default 3) runs per sensor case and rpict
 #   bench-cpu the same on PoCL with every core (NO_RADIANCE=1: radcl alone)
+#   peers     tests/bench/peers.sh on the GPU against Radiance -n (all cores) in the same run
+#             (P1-P5; needs Radiance bundled), its table and chart under $OUT
+#   peers-cpu the same with radcl on PoCL over every core (PEERS_ARGS=--small: the 2-core cases)
 #   cost      tests/bench/accuracy_cost.sh on the GPU: time and error along a ladder of ambient
 #             settings, Radiance alongside when it was bundled (BENCH_REPEAT default 3)
 #   rounds    office_clear's cache build on the GPU, its rounds' time by size
@@ -34,7 +37,7 @@ export OCL_ICD_VENDORS=/tmp/vendors LD_LIBRARY_PATH=$b/lib POCL_CACHE_DIR=/tmp/p
   RADCL_CACHE_DIR=/tmp/radcl-cache RADCL_TEST_DATA=$root/tests/data RADCL_BIN=$b/bin \
   RADCL_SOURCE_DIR=$root RADCL_REFERENCE=$b/ref
 mkdir -p "$b/build" && ln -sfn "$b/bin" "$b/build/bin"
-[ -x "$b/radiance/rtrace" ] && [ -z "${NO_RADIANCE:-}" ] && export RADIANCE_BIN=$b/radiance RAYPATH=.:$b/radiance
+[ -x "$b/radiance/rtrace" ] && [ -z "${NO_RADIANCE:-}" ] && export RADIANCE_BIN=$b/radiance RAYPATH=.:$b/radiance RADIANCE_LIB=$b/radiance
 
 tests() { # the stability suite, then the rest, each executable under a time limit; TEST_JOBS
   # processes at once (NVIDIA's compiles of each scene's program are CPU-bound: they overlap),
@@ -130,6 +133,8 @@ for what in "$@"; do
   tests) RADCL_DEVICE=nvidia tests ;;
   bench) RADCL_DEVICE=nvidia BENCH_REPEAT=${BENCH_REPEAT:-3} "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
   cost) RADCL_DEVICE=nvidia BENCH_REPEAT=${BENCH_REPEAT:-3} "$root/tests/bench/accuracy_cost.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/cost_gpu.txt" ;;
+  peers) RADCL_DEVICE=nvidia PEERS_OUT=$out "$root/tests/bench/peers.sh" ${PEERS_ARGS:-} "$b/build" 2>&1 | tee "$out/peers_gpu.txt" ;;
+  peers-cpu) RADCL_DEVICE=pocl PEERS_OUT=$out/pocl "$root/tests/bench/peers.sh" ${PEERS_ARGS:-} "$b/build" 2>&1 | tee "$out/peers_pocl.txt" ;;
   bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;
   profile) profile 2>&1 | tee "$out/profile.txt" ;;
   cold) RADCL_DEVICE=nvidia cold 2>&1 | tee "$out/cold.txt" ;;

@@ -3,6 +3,11 @@
 //                                  materials, written as a Radiance mesh, plus out.rad that
 //                                  places it ("void mesh terrain 1 out.rtm 0 0")
 //   gen_scenes polygons N out.rad  N quadrilaterals over four materials, as Radiance text
+//   gen_scenes openplan N dir      an open-plan floor of NX x NY furnished office bays
+//                                  (N = NX, NY = NX / 2 + 1) for tests/bench/peers.sh: each bay
+//                                  an instance of office_unit.oct (desk, partitions, two
+//                                  chair.oct instances, a plant mesh of 20,000 triangles);
+//                                  writes plant.rtm, office_unit.rad and floor.rad into dir
 // Output is deterministic, so timings of different builds load the same files.
 #include <cmath>
 #include <cstdio>
@@ -112,15 +117,123 @@ int gen_polygons(long n, const std::string& out, const std::string& command) {
   return 0;
 }
 
+// A closed, lumpy blob of about n triangles (a displaced sphere): dense geometry that is cheap
+// to generate and looks like a plant or a sculpture.
+TriangleMesh blob(long n_tris) {
+  TriangleMesh m;
+  const long nv = std::max(4L, std::lround(std::sqrt(n_tris / 4.0))), nu = 2 * nv;
+  for (long j = 0; j <= nv; ++j)
+    for (long i = 0; i < nu; ++i) {
+      const double th = M_PI * double(j) / nv, ph = 2 * M_PI * double(i) / nu;
+      const double r = 1 + 0.18 * std::sin(5 * th) * std::cos(7 * ph) + 0.06 * std::sin(23 * ph);
+      m.positions.push_back(
+          {r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th)});
+    }
+  m.vertex_flags.assign(m.positions.size(), 0);
+  auto id = [nu](long i, long j) { return static_cast<std::uint32_t>(j * nu + (i % nu)); };
+  for (long j = 0; j < nv; ++j)
+    for (long i = 0; i < nu; ++i) {
+      if (j > 0) m.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j)});
+      if (j + 1 < nv) m.triangles.push_back({id(i + 1, j), id(i, j + 1), id(i + 1, j + 1)});
+    }
+  m.triangle_material.assign(m.triangles.size(), 0);
+  Object o;
+  o.type = RC_OBJ_PLASTIC;
+  o.name = "leaf";
+  o.fargs = {0.15, 0.35, 0.1, 0.01, 0.1};
+  m.objects.objects.push_back(o);
+  m.materials.push_back("leaf");
+  return m;
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream f(path);
+  f << text;
+  if (!f) throw radcl::FatalError("write error on \"" + path + "\"");
+}
+
+// Bays of 6 x 4 m in a 2.7 m high floor plate with window bands on both long sides.
+int gen_openplan(long nx, const std::string& dir, const std::string& command) {
+  const long ny = nx / 2 + 1;
+  const auto info = radcl::scene::write_mesh(blob(20000), dir + "/plant.rtm", {{command}});
+  std::string unit =
+      "# " + command +
+      "\n"
+      "void plastic desk_wood 0 0 5 .45 .32 .2 .02 .05\n"
+      "void plastic panel_cloth 0 0 5 .3 .35 .45 0 0\n"
+      "void instance chair_a 5 chair.oct -t 3 1.2 0 0 0\n"
+      "void instance chair_b 7 chair.oct -rz 180 -t 3 2.8 0 0 0\n"
+      "void mesh plant 7 plant.rtm -s 0.35 -t 5.3 3.3 0.6 0 0\n"
+      "panel_cloth polygon part_s 0 0 12 0 0.05 0  6 0.05 0  6 0.05 1.2  0 0.05 1.2\n"
+      "panel_cloth polygon part_w 0 0 12 0.05 0 0  0.05 0 1.2  0.05 4 1.2  0.05 4 0\n"
+      "desk_wood polygon desk_top 0 0 12 2.2 1.6 0.75  3.8 1.6 0.75  3.8 2.4 0.75  "
+      "2.2 2.4 0.75\n";
+  // The desk's sides, facing out.
+  const char* sides[] = {"2.2 1.6 0  3.8 1.6 0  3.8 1.6 0.75  2.2 1.6 0.75",
+                         "3.8 1.6 0  3.8 2.4 0  3.8 2.4 0.75  3.8 1.6 0.75",
+                         "3.8 2.4 0  2.2 2.4 0  2.2 2.4 0.75  3.8 2.4 0.75",
+                         "2.2 2.4 0  2.2 1.6 0  2.2 1.6 0.75  2.2 2.4 0.75"};
+  for (int k = 0; k < 4; ++k)
+    unit += "desk_wood polygon desk_side" + std::to_string(k) + " 0 0 12 " + sides[k] + "\n";
+  write_text(dir + "/office_unit.rad", unit);
+
+  const double w = 6.0 * nx, h = 4.0 * ny;
+  char buf[512];
+  std::string floor = "# " + command +
+                      "\n"
+                      "void plastic floor_mat 0 0 5 .25 .22 .2 0 0\n"
+                      "void plastic ceiling_mat 0 0 5 .8 .8 .8 0 0\n"
+                      "void plastic wall_mat 0 0 5 .6 .6 .58 0 0\n"
+                      "void glass window_glass 0 0 3 .86 .86 .86\n";
+  auto quad = [&](const char* mat, const char* name, double a[4][3]) {
+    std::snprintf(buf, sizeof buf, "%s polygon %s 0 0 12 %g %g %g  %g %g %g  %g %g %g  %g %g %g\n",
+                  mat, name, a[0][0], a[0][1], a[0][2], a[1][0], a[1][1], a[1][2], a[2][0], a[2][1],
+                  a[2][2], a[3][0], a[3][1], a[3][2]);
+    floor += buf;
+  };
+  double f[4][3] = {{0, 0, 0}, {w, 0, 0}, {w, h, 0}, {0, h, 0}};
+  double c[4][3] = {{0, 0, 2.7}, {0, h, 2.7}, {w, h, 2.7}, {w, 0, 2.7}};
+  quad("floor_mat", "floor", f);
+  quad("ceiling_mat", "ceiling", c);
+  // South (y = 0, facing +y) and north (y = h, facing -y): wall, window band 0.9-2.4 m, wall.
+  for (int side = 0; side < 2; ++side) {
+    const double y = side ? h : 0;
+    const double bands[3][2] = {{0, 0.9}, {0.9, 2.4}, {2.4, 2.7}};
+    for (int b = 0; b < 3; ++b) {
+      double q[4][3] = {
+          {0, y, bands[b][0]}, {0, y, bands[b][1]}, {w, y, bands[b][1]}, {w, y, bands[b][0]}};
+      if (side) std::swap(q[1], q[3]);
+      const std::string name = std::string(side ? "north" : "south") + std::to_string(b);
+      quad(b == 1 ? "window_glass" : "wall_mat", name.c_str(), q);
+    }
+  }
+  double west[4][3] = {{0, 0, 0}, {0, h, 0}, {0, h, 2.7}, {0, 0, 2.7}};
+  double east[4][3] = {{w, 0, 0}, {w, 0, 2.7}, {w, h, 2.7}, {w, h, 0}};
+  quad("wall_mat", "west", west);
+  quad("wall_mat", "east", east);
+  for (long j = 0; j < ny; ++j)
+    for (long i = 0; i < nx; ++i) {
+      std::snprintf(buf, sizeof buf, "void instance bay_%ld_%ld 5 office_unit.oct -t %g %g 0 0 0\n",
+                    i, j, 6.0 * i, 4.0 * j);
+      floor += buf;
+    }
+  write_text(dir + "/floor.rad", floor);
+  std::printf("%s: %ld x %ld bays of %zu plant triangles (%.2f million placed), %g x %g m\n",
+              dir.c_str(), nx, ny, info.source_triangle.size(),
+              1e-6 * double(nx * ny) * double(info.source_triangle.size()), w, h);
+  return 0;
+}
+
 int body(int argc, char** argv) {
   if (argc != 4 || std::atol(argv[2]) <= 0)
-    throw radcl::FatalError("usage: gen_scenes mesh|polygons N out");
+    throw radcl::FatalError("usage: gen_scenes mesh|polygons|openplan N out");
   std::string command = "gen_scenes";
   for (int i = 1; i < argc; ++i)
     command += std::string(" ") + argv[i];
   const std::string kind = argv[1];
   if (kind == "mesh") return gen_mesh(std::atol(argv[2]), argv[3], command);
   if (kind == "polygons") return gen_polygons(std::atol(argv[2]), argv[3], command);
+  if (kind == "openplan") return gen_openplan(std::atol(argv[2]), argv[3], command);
   throw radcl::FatalError("unknown scene kind \"" + kind + "\"");
 }
 

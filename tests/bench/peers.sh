@@ -1,0 +1,195 @@
+#!/usr/bin/env bash
+# radcl against Radiance, side by side in one go on one machine, on the cases a user runs:
+#   P1  office_clear, a workplane grid (100,000 points; --small: 10,000) at the default
+#       settings -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 (irradiance cache)
+#   P2  office_clear, 10,000 points (--small: 2,000) at -ab 2 -aa 0 -ad 1024 -lw 1e-4 (no cache)
+#   P3  rpict office_view 1024^2 (--small: 512^2) at -ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128,
+#       against Radiance's rpict and against vwrays -ff | rtrace -n N -ffc
+#   P4  an open-plan floor of 60 furnished office bays (instances; 1.19 million plant-mesh
+#       triangles placed), 10,000 points at the default settings (needs Radiance's oconv;
+#       not in --small)
+#   P5  the integrating sphere at -ab 8 (-ad 1024 -as 256 -aa 0.1 -ar 64 -lw 1e-5)
+# Radiance runs with -n set to every core. Grids are generated here. Errors: P1 on its first
+# 77 points (office_grid.pts) against the converged -ab 5 answer (tests/data/results/
+# office_clear_mc5.txt), P5 against the sphere's exact answer; where no converged answer exists
+# (P2, P3, P4) the two renderers' mean difference is shown instead. Times are warm: each
+# scene's device program is compiled (and cached) by a one-point run first, which is not timed.
+#
+# Writes docs/bench/peers.md (--small: docs/bench/peers_2core.md) with the table, the machine,
+# the date and the commit, and a bar chart of the speed-ups (peers.svg / peers_2core.svg).
+#
+# usage: RADIANCE_BIN=/path/to/radiance/bin tests/bench/peers.sh [--small] [build-dir]
+#   RADIANCE_LIB: Radiance's library folder for its RAYPATH (default: $RADIANCE_BIN/../lib)
+#   PEERS_OUT: folder for the .md and .svg (default: docs/bench)
+set -euo pipefail
+small=0
+if [ "${1:-}" = --small ]; then
+  small=1
+  shift
+fi
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=$(cd "${1:-$root/build}" && pwd)
+[ -n "${RADIANCE_BIN:-}" ] || { echo "peers.sh: set RADIANCE_BIN to Radiance's bin/" >&2; exit 1; }
+rbin=$(cd "$RADIANCE_BIN" && pwd)
+rlib=${RADIANCE_LIB:-$rbin/../lib}
+cores=$(nproc)
+scenes=$root/tests/data/scenes
+results=$root/tests/data/results
+outdir=${PEERS_OUT:-$root/docs/bench}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+# shellcheck source=tests/bench/sensor_errors.sh
+. "$root/tests/bench/sensor_errors.sh"
+
+if [ $small = 1 ]; then n1=10000 n2=2000 res=512 tag=peers_2core; else n1=100000 n2=10000 res=1024 tag=peers; fi
+default="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3"
+nocache="-ab 2 -aa 0 -ad 1024 -lw 1e-4"
+picture="-ab 2 -ad 1024 -as 256 -aa 0.15 -ar 128"
+sphere="-ab 8 -ad 1024 -as 256 -aa 0.1 -ar 64 -lw 1e-5"
+
+# grid N x0 x1 y0 y1 z: about N upward points on a regular grid over the rectangle.
+grid() {
+  awk -v n="$1" -v x0="$2" -v x1="$3" -v y0="$4" -v y1="$5" -v z="$6" 'BEGIN {
+    a = (x1 - x0) / (y1 - y0); nx = int(sqrt(n * a) + 0.5); ny = int(n / nx + 0.5)
+    for (j = 0; j < ny; j++) for (i = 0; i < nx; i++)
+      printf "%.4f %.4f %g 0 0 1\n", x0 + (i + 0.5) * (x1 - x0) / nx, y0 + (j + 0.5) * (y1 - y0) / ny, z }'
+}
+# The reference sensors first (for the errors), then the generated grid.
+cat "$scenes/office_grid.pts" > "$work/p1.pts"
+grid $((n1 - 77)) 0.1 5.9 0.1 3.9 0.8 >> "$work/p1.pts"
+cat "$scenes/office_grid.pts" > "$work/p2.pts"
+grid $((n2 - 77)) 0.1 5.9 0.1 3.9 0.8 >> "$work/p2.pts"
+
+secs() { awk '/^[0-9.]+$/ { t = $1 } END { print t }' "$1"; }
+# radcl dir input output program args... : prints seconds
+radcl() {
+  local dir=$1 in=$2 out=$3 prog=$4
+  shift 4
+  ( cd "$dir" && /usr/bin/time -f "%e" "$build/bin/$prog" "$@" < "$in" > "$out" 2> "$work/err" ) ||
+    { cat "$work/err" >&2; exit 1; }
+  secs "$work/err"
+}
+radiance() {
+  local dir=$1 in=$2 out=$3 prog=$4
+  shift 4
+  ( cd "$dir" && RAYPATH=.:$rlib /usr/bin/time -f "%e" "$rbin/$prog" "$@" < "$in" > "$out" \
+      2> "$work/err" ) || { cat "$work/err" >&2; exit 1; }
+  secs "$work/err"
+}
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
+# Mean relative difference of the luminances in two value files (rgb per line).
+differ() { errs "$1" "$2" | awk '{ print $1 }'; }
+# Mean luminance of a picture (radcl's picture reader).
+lum() { "$build/bin/bench_picture_mean" "$1"; }
+warm() { # dir octree: compiles the scene's program
+  ( cd "$1" && head -n 1 "$work/p2.pts" | "$build/bin/rtrace" -h -I -ab 1 -aa 0.2 "$2" > /dev/null )
+}
+
+rows=()
+add() { rows+=("$(printf '%s\t' "$@")"); printf '%-4s %-46s %9s %9s %7sx  %-16s %-16s\n' "$@"; }
+printf '%-4s %-46s %9s %9s %8s  %-16s %-16s\n' case what radcl_s radiance_s speedup "radcl err" \
+  "Radiance err"
+
+# P1
+warm "$scenes" office_clear.oct
+t=$(radcl "$scenes" "$work/p1.pts" "$work/c1.txt" rtrace -n "$cores" -h -I $default office_clear.oct)
+r=$(radiance "$scenes" "$work/p1.pts" "$work/r1.txt" rtrace -n "$cores" -h -I $default office_clear.oct)
+head -n 77 "$work/c1.txt" > "$work/c1h.txt"
+head -n 77 "$work/r1.txt" > "$work/r1h.txt"
+add P1 "office_clear, $n1 points, cache" "$t" "$r" "$(ratio "$r" "$t")" \
+  "$(errs "$work/c1h.txt" "$results/office_clear_mc5.txt")" \
+  "$(errs "$work/r1h.txt" "$results/office_clear_mc5.txt")"
+
+# P2
+t=$(radcl "$scenes" "$work/p2.pts" "$work/c2.txt" rtrace -n "$cores" -h -I $nocache office_clear.oct)
+r=$(radiance "$scenes" "$work/p2.pts" "$work/r2.txt" rtrace -n "$cores" -h -I $nocache office_clear.oct)
+add P2 "office_clear, $n2 points, -aa 0" "$t" "$r" "$(ratio "$r" "$t")" \
+  "differ $(differ "$work/c2.txt" "$work/r2.txt")" "(no converged)"
+
+# P3: rpict, and vwrays | rtrace -n N -ffc
+( cd "$scenes" && "$build/bin/rpict" -vf office.vf -x 16 -y 16 $picture office_clear.oct > /dev/null )
+t=$(radcl "$scenes" /dev/null "$work/c3.hdr" rpict -vf office.vf -x "$res" -y "$res" $picture office_clear.oct)
+r=$(radiance "$scenes" /dev/null "$work/r3.hdr" rpict -vf office.vf -x "$res" -y "$res" $picture office_clear.oct)
+vres=$(cd "$scenes" && "$rbin/vwrays" -d -vf office.vf -x "$res" -y "$res")
+v=$( ( cd "$scenes" && RAYPATH=.:$rlib /usr/bin/time -f "%e" bash -c \
+  "'$rbin/vwrays' -ff -vf office.vf -x $res -y $res | '$rbin/rtrace' -n $cores -ffc $vres $picture office_clear.oct > '$work/v3.hdr'" ) 2>&1 | tail -n 1)
+dc=$(awk -v a="$(lum "$work/c3.hdr")" -v b="$(lum "$work/r3.hdr")" 'BEGIN { printf "%.2f%%", 100 * (a - b) / b }')
+add P3 "rpict office_view ${res}^2 vs rpict" "$t" "$r" "$(ratio "$r" "$t")" "mean $dc" "(no converged)"
+add P3v "rpict office_view ${res}^2 vs vwrays + rtrace -n $cores" "$t" "$v" "$(ratio "$v" "$t")" "" ""
+
+# P4: the open-plan floor (Radiance's oconv makes the octrees both renderers read).
+if [ $small = 0 ]; then
+  op=$work/openplan
+  mkdir -p "$op"
+  "$build/bin/bench_gen_scenes" openplan 10 "$op" > /dev/null
+  cp "$scenes/chair.oct" "$scenes/chair.rad" "$scenes/office_sky_clear.rad" "$op/"
+  ( cd "$op" && RAYPATH=.:$rlib "$rbin/oconv" -f office_unit.rad > office_unit.oct &&
+    RAYPATH=.:$rlib "$rbin/oconv" office_sky_clear.rad floor.rad > openplan.oct )
+  grid 10000 0.2 59.8 0.2 23.8 0.8 > "$work/p4.pts"
+  warm "$op" openplan.oct
+  t=$(radcl "$op" "$work/p4.pts" "$work/c4.txt" rtrace -n "$cores" -h -I $default openplan.oct)
+  r=$(radiance "$op" "$work/p4.pts" "$work/r4.txt" rtrace -n "$cores" -h -I $default openplan.oct)
+  add P4 "open-plan floor, 1.19M triangles, 10000 pts" "$t" "$r" "$(ratio "$r" "$t")" \
+    "differ $(differ "$work/c4.txt" "$work/r4.txt")" "(no converged)"
+fi
+
+# P5
+warm "$scenes" sphere.oct
+t=$(radcl "$scenes" "$scenes/sphere_wall.pts" "$work/c5.txt" rtrace -n "$cores" -h -I $sphere sphere.oct)
+r=$(radiance "$scenes" "$scenes/sphere_wall.pts" "$work/r5.txt" rtrace -n "$cores" -h -I $sphere sphere.oct)
+exact=$(awk '$1 == 8 { print $2 }' "$results/sphere_exact.txt")
+serr() { awk -v x="$exact" '{ s += $1; n++ } END { printf "%+.2f%%", 100 * (s / n - x) / x }' "$1"; }
+add P5 "integrating sphere, -ab 8" "$t" "$r" "$(ratio "$r" "$t")" "$(serr "$work/c5.txt")" \
+  "$(serr "$work/r5.txt")"
+
+# The record: markdown table and an SVG bar chart of the speed-ups.
+commit=${PEERS_COMMIT:-$(git -C "$root" rev-parse --short HEAD 2> /dev/null || echo unknown)}
+cpu=$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)
+device=$("$build/bin/radcl" devices 2> /dev/null | awk '/^\*/ { $1 = ""; print; exit }' | sed 's/^ *//')
+mkdir -p "$outdir"
+{
+  echo "# radcl and Radiance side by side$([ $small = 1 ] && echo ' (2-core mode)')"
+  echo
+  echo "Made by \`tests/bench/peers.sh$([ $small = 1 ] && echo ' --small')\` on $(date -u +%Y-%m-%d), radcl at"
+  echo "commit $commit, Radiance $("$rbin/rtrace" -version | head -n 1) with \`-n $cores\`."
+  echo "Machine: $cores cores ($cpu); radcl's device: ${device:-unknown}."
+  echo
+  echo "![speed-ups](${tag}.svg)"
+  echo
+  echo "| case | what | radcl s | Radiance s | speed-up | radcl error; Radiance error |"
+  echo "|---|---|---:|---:|---:|---|"
+} > "$work/head.md"
+{
+  cat "$work/head.md"
+  for row in "${rows[@]}"; do printf '%s\n' "$row"; done |
+    awk -F'\t' '{ printf "| %s | %s | %s | %s | %sx | %s; %s |\n", $1, $2, $3, $4, $5, $6, $7 }'
+  echo
+  echo "Errors: P1 on office_grid.pts's 77 points against the converged -ab 5 answer (mean, worst"
+  echo "luminance error); P5 against the exact answer; \"differ\" is the two renderers' mean"
+  echo "difference where no converged answer exists. Times are wall-clock seconds of warm runs"
+  echo "(the scene's device program compiled and cached beforehand)."
+} > "$outdir/$tag.md"
+# SVG: one bar per case, log scale from 0.1x to 100x, lines at 1x, 2x, 5x and 10x.
+for row in "${rows[@]}"; do printf '%s\n' "$row"; done | awk -F'\t' '{ print $1, $5 }' | awk -v small="$small" '
+  function y(v) { return 40 + 260 * (1 - (log(v) / log(10) + 1) / 3) }
+  { c[NR] = $1; s[NR] = ($2 > 0.1 ? $2 : 0.1) }
+  END {
+    w = 80 + 90 * NR
+    printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"340\" font-family=\"sans-serif\" font-size=\"12\">\n", w
+    printf "<text x=\"10\" y=\"20\" font-size=\"14\">radcl speed-up over Radiance -n N (log scale)%s</text>\n", small ? ", 2-core machine" : ""
+    split("0.1 1 2 5 10 100", g, " ")
+    for (k = 1; k <= 6; k++) {
+      printf "<line x1=\"60\" x2=\"%d\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"%s\"/>\n", w - 10, y(g[k]), y(g[k]), g[k] == 1 ? "black" : "#ccc"
+      printf "<text x=\"10\" y=\"%.1f\">%sx</text>\n", y(g[k]) + 4, g[k]
+    }
+    for (k = 1; k <= NR; k++) {
+      x = 70 + 90 * (k - 1); top = y(s[k]); base = y(1)
+      col = s[k] >= 1 ? "#2a7" : "#c43"
+      if (top < base) printf "<rect x=\"%d\" y=\"%.1f\" width=\"60\" height=\"%.1f\" fill=\"%s\"/>\n", x, top, base - top, col
+      else printf "<rect x=\"%d\" y=\"%.1f\" width=\"60\" height=\"%.1f\" fill=\"%s\"/>\n", x, base, top - base, col
+      printf "<text x=\"%d\" y=\"%.1f\" text-anchor=\"middle\">%.2fx</text>\n", x + 30, (top < base ? top - 4 : top + 14), s[k]
+      printf "<text x=\"%d\" y=\"325\" text-anchor=\"middle\">%s</text>\n", x + 30, c[k]
+    }
+    print "</svg>"
+  }' > "$outdir/$tag.svg"
+echo "wrote $outdir/$tag.md and $outdir/$tag.svg"
