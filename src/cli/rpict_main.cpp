@@ -189,9 +189,10 @@ public:
       bool radiance = true;
       if (!pout.empty()) {
         name = cli::frame_name(pout, seq);
+        // Any name that is not another format's is a Radiance picture, as Radiance writes
+        // every name (rad's raw pictures end in .unf).
         auto kind = image::image_kind(name);
-        if (!kind) throw FatalError("unknown output picture type \"" + name + "\"");
-        radiance = *kind == image::ImageKind::radiance;
+        radiance = !kind || *kind == image::ImageKind::radiance;
         // Exclusive open: an existing frame is never overwritten, only skipped.
         int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);
         if (fd < 0) {

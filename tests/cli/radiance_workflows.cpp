@@ -130,6 +130,21 @@ TEST_F(RadianceWorkflows, RadOvertureThenMainRun) {
   EXPECT_GT(mean_red(p), 0.0);
 }
 
+// rad names its raw pictures view.unf, and restarts an interrupted one with -ro: any name that
+// is not another format's is a Radiance picture.
+TEST_F(RadianceWorkflows, RawPictureNames) {
+  const std::string pic = (dir / "cornell_v.unf").string();
+  std::string out;
+  ASSERT_EQ(
+      in_scenes(bin_dir() + "/rpict -vf cornell.vf -x 32 -y 32 -ab 0 -o " + pic + " cornell.oct",
+                &out),
+      0)
+      << out;
+  radcl::image::Picture p = radcl::image::read_picture(pic);
+  EXPECT_EQ(p.width, 32);
+  EXPECT_GT(mean_red(p), 0.0);
+}
+
 // vwrays -ff -vf v.vf -x W -y H | rtrace -n 2 @opts -ffc -x W -y H scene.oct > pic.hdr: the
 // rays are written here as vwrays writes them (float origin and direction per pixel, top row
 // first, through pixel centres); the picture is rpict's with -pj 0 -ps 1.
