@@ -13,7 +13,7 @@ typedef ulong rc_u64;
 typedef float4 rc_float4;
 /* Large functions called from several places (shading, patterns, generated .cal code) stay
  * calls: a compiler that inlines everything, as NVIDIA's does, builds a copy per call site, and
- * a scene's first build took twice as long (docs/device.md). -DRADCL_INLINE_ALL undoes it. */
+ * a scene's first build took twice as long (docs/internals.md). -DRADCL_INLINE_ALL undoes it. */
 #ifdef RADCL_INLINE_ALL
 #define RC_NOINLINE
 #else

@@ -20,7 +20,7 @@ typedef struct rc_u32x4 {
 
 /* In the kernels the generator's ten rounds stay one function rather than a copy at each of
  * its many call sites (RC_NOINLINE, device_types.h: NVIDIA's first build of office_clear
- * 7.79 -> 7.00 s, run times the same; docs/device.md). */
+ * 7.79 -> 7.00 s, run times the same; docs/internals.md). */
 #ifdef __OPENCL_C_VERSION__
 #define RC_RNG_PHILOX RC_NOINLINE static
 #else

@@ -1,5 +1,5 @@
 /* Making an irradiance-cache record from one sampled hemisphere, as Radiance 5's doambient does
- * once the samples are in (docs/ambient.md, "Making a record"): the record's value is the mean
+ * once the samples are in (docs/cache-internals.md, "Making a record"): the record's value is the mean
  * of the strata; the Hessian of the irradiance (Schwarzhaupt, Jensen & Jarosz 2012) over the
  * triangle mesh of the strata's hit points gives the two radii and the u axis, the same mesh's
  * form-factor gradient the translational gradient, the tangents of the sample directions the
@@ -155,7 +155,7 @@ static float2 rc_amr_tangent_term(const rc_amr_frame* f, global const rc_amb_sam
  * per eigenvalue, the smaller one first; u0 (local xy) is the axis of the larger eigenvalue. Both
  * radii are the maximum where an eigenvalue vanishes. Unlike Radiance, the axes are the true
  * eigenvectors also for a negative eigenvalue and when the off-diagonal term is tiny (see
- * docs/ambient.md). */
+ * docs/cache-internals.md). */
 static void rc_amr_axes(float3 h, float maxarad, float2* u0, float2* ra) {
   const float tiny = RC_AMR_FTINY * RC_AMR_FTINY;
   float mid = 0.5f * (h.x + h.z), hdif = 0.5f * (h.x - h.z);

@@ -100,7 +100,7 @@ static void rc_direct_select(global rc_shadow* g, uint n, float known, const rc_
  * l) meets at distance dist: Radiance traces that ray and shades the source's surface, patterns
  * included (brightdata distributions on light and illum). The shadow ray's T continues its
  * parent's: dist0 (the ray tree up to p) plus dist; its Ts is dist. Virtual sources and distant
- * ones are not modulated (docs/render.md). */
+ * ones are not modulated (docs/materials.md). */
 RC_NOINLINE
 static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* src, float3 p,
                                 float3 l, float dist, float dist0) {

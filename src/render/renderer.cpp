@@ -237,7 +237,7 @@ struct Renderer::Impl {
     stats = RenderStats{}; // the pretest's rays are not the caller's
   }
 
-  // ---- The irradiance cache (docs/ambient.md) ----
+  // ---- The irradiance cache (docs/cache-internals.md) ----
   // How a primary starts when it is a hemisphere sample of a record being made.
   struct RayStart {
     std::uint32_t flags = RC_RAY_PRIMARY, depth = 0, ambient_depth = 0;
@@ -270,7 +270,7 @@ struct Renderer::Impl {
   AmbientCacheBuffers cache, marked;
   LeakTester leak_tester;
   // The current render_batch's lists of records whose leak test failed, per hit: [count,
-  // index...]; a hit names its list in nrm.w (docs/ambient.md).
+  // index...]; a hit names its list in nrm.w (docs/cache-internals.md).
   std::vector<std::uint32_t> leak_lists{0};
   std::size_t leak_uploaded = 0;
 

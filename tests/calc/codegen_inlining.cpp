@@ -1,5 +1,5 @@
 // The generated source keeps its longer functions out of line (RC_NOINLINE): a compiler that
-// inlines everything, as NVIDIA's does, would copy them into every call (docs/device.md).
+// inlines everything, as NVIDIA's does, would copy them into every call (docs/internals.md).
 // Short ones stay inline, and copies of recursive functions keep their own marker only.
 #include <gtest/gtest.h>
 #include <string>

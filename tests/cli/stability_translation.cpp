@@ -270,7 +270,7 @@ TEST_F(StabilityTranslation, AmbientCacheMillimetreWithinNoise) {
 // record's harmonic mean hit distance) passes too, but costs either the office's accuracy
 // (R0 = 1: 2.55% against 0.95%) or the luminaires room's time (R0 = 8: 29 s against 6 s).
 // The km office at -ar 2048 (32 times the metre office's) is within these bounds (mean +1.1%,
-// RMS 3.0%): the user's remedy. docs/stability.md.
+// RMS 3.0%): the user's remedy. docs/differences.md.
 TEST_F(StabilityTranslation, DISABLED_AmbientCacheKilometreWithinNoise) {
   std::vector<double> base = sensors({}, kCache);
   Diff d = compare(base, sensors({1e-3, 0}, kCache));

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs radcl's libFuzzer targets (docs/fuzzing.md) and prints, per target, executions, exec/s,
+# Runs radcl's libFuzzer targets (docs/development.md) and prints, per target, executions, exec/s,
 # coverage (cov/ft of libFuzzer's final status line, and of the whole corpus afterwards) and
 # findings (crash-/leak-/timeout-/oom- files).
 #

@@ -1,5 +1,5 @@
 // Records made from sampled hemispheres (render/ambient_record.h, kernels/render/ambient_record.cl)
-// against a double-precision reference written here from the derivation in docs/ambient.md
+// against a double-precision reference written here from the derivation in docs/cache-internals.md
 // ("Making a record"): per-triangle sums of full 3x3 edge terms, as Radiance assembles them,
 // where the kernel gathers per edge in the tangent frame. The reference's gradient and Hessian
 // are checked against finite differences of the mesh's irradiance (Lambert's formula), and the

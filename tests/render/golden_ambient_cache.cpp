@@ -223,7 +223,7 @@ TEST(GoldenAmbientCache, DISABLED_OfficeClearDefaultAccuracy) {
 
 // -aw: rays past the last bounce take -av averaged with the records' values (with a black -av,
 // their geometric mean times AVGREFL), which adds light; without a cache (-aa 0) -av stays as
-// given. radcl updates the average per round of records (docs/ambient.md), so the records
+// given. radcl updates the average per round of records (docs/cache-internals.md), so the records
 // that see it are those made after others exist: here 24 records facing the sphere's centre
 // come first (one round, -aw 1), then meters at the same points tilted 45 degrees (no record
 // covers them) make their own, seeing the average of the 24 (-aw 1) or the black -av (-aw 0).

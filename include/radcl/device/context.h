@@ -46,7 +46,7 @@ public:
   // On a device with its own memory, room for a small transfer in pinned host memory, valid
   // until the queue drains; nullptr where there is none (large transfers, zero-copy devices).
   // NVIDIA's driver makes a transfer from or to pageable memory wait; from pinned memory it
-  // does not, so a wave's reads and writes share one wait (docs/device.md).
+  // does not, so a wave's reads and writes share one wait (docs/internals.md).
   void* pinned(std::size_t bytes);
   bool pins() const { return use_pinned_; }
   // Copies `bytes` from `from` (pinned room a read is filling) to `to` once the queue drains.
