@@ -16,11 +16,16 @@
 # scene's device program is compiled (and cached) by a one-point run first, which is not timed.
 #
 # Writes docs/bench/peers.md (--small: docs/bench/peers_2core.md) with the table, the machine,
-# the date and the commit, and a bar chart of the speed-ups (peers.svg / peers_2core.svg).
+# the date and the commit, and a bar chart of the speed-ups (peers.svg / peers_2core.svg), from
+# the rows it also writes as peers.tsv / peers_2core.tsv.
 #
 # usage: RADIANCE_BIN=/path/to/radiance/bin tests/bench/peers.sh [--small] [build-dir]
 #   RADIANCE_LIB: Radiance's library folder for its RAYPATH (default: $RADIANCE_BIN/../lib)
 #   PEERS_OUT: folder for the .md and .svg (default: docs/bench)
+#   PEERS_CASES: the cases to run (default "P1 P2 P3 P4 P5"; P4 is skipped with --small)
+#   PEERS_LABEL: appended to each case's name (e.g. "PoCL" for a run with radcl on the CPU)
+# Each run leaves its rows in $PEERS_OUT/peers.tsv; tests/bench/peers_report.sh merges several
+# runs' files into one table and chart.
 set -euo pipefail
 small=0
 if [ "${1:-}" = --small ]; then
@@ -85,12 +90,15 @@ warm() { # dir octree: compiles the scene's program
   ( cd "$1" && head -n 1 "$work/p2.pts" | "$build/bin/rtrace" -h -I -ab 1 -aa 0.2 "$2" > /dev/null )
 }
 
+cases=${PEERS_CASES:-P1 P2 P3 P4 P5}
+want() { [[ " $cases " == *" $1 "* ]]; }
 rows=()
 add() { rows+=("$(printf '%s\t' "$@")"); printf '%-4s %-46s %9s %9s %7sx  %-16s %-16s\n' "$@"; }
 printf '%-4s %-46s %9s %9s %8s  %-16s %-16s\n' case what radcl_s radiance_s speedup "radcl err" \
   "Radiance err"
 
 # P1
+if want P1; then
 warm "$scenes" office_clear.oct
 t=$(radcl "$scenes" "$work/p1.pts" "$work/c1.txt" rtrace -n "$cores" -h -I $default office_clear.oct)
 r=$(radiance "$scenes" "$work/p1.pts" "$work/r1.txt" rtrace -n "$cores" -h -I $default office_clear.oct)
@@ -99,14 +107,19 @@ head -n 77 "$work/r1.txt" > "$work/r1h.txt"
 add P1 "office_clear, $n1 points, cache" "$t" "$r" "$(ratio "$r" "$t")" \
   "$(errs "$work/c1h.txt" "$results/office_clear_mc5.txt")" \
   "$(errs "$work/r1h.txt" "$results/office_clear_mc5.txt")"
+fi
 
 # P2
+if want P2; then
+warm "$scenes" office_clear.oct
 t=$(radcl "$scenes" "$work/p2.pts" "$work/c2.txt" rtrace -n "$cores" -h -I $nocache office_clear.oct)
 r=$(radiance "$scenes" "$work/p2.pts" "$work/r2.txt" rtrace -n "$cores" -h -I $nocache office_clear.oct)
 add P2 "office_clear, $n2 points, -aa 0" "$t" "$r" "$(ratio "$r" "$t")" \
   "differ $(differ "$work/c2.txt" "$work/r2.txt")" "(no converged)"
+fi
 
 # P3: rpict, and vwrays | rtrace -n N -ffc
+if want P3; then
 ( cd "$scenes" && "$build/bin/rpict" -vf office.vf -x 16 -y 16 $picture office_clear.oct > /dev/null )
 t=$(radcl "$scenes" /dev/null "$work/c3.hdr" rpict -vf office.vf -x "$res" -y "$res" $picture office_clear.oct)
 r=$(radiance "$scenes" /dev/null "$work/r3.hdr" rpict -vf office.vf -x "$res" -y "$res" $picture office_clear.oct)
@@ -116,9 +129,10 @@ v=$( ( cd "$scenes" && RAYPATH=.:$rlib /usr/bin/time -f "%e" bash -c \
 dc=$(awk -v a="$(lum "$work/c3.hdr")" -v b="$(lum "$work/r3.hdr")" 'BEGIN { printf "%.2f%%", 100 * (a - b) / b }')
 add P3 "rpict office_view ${res}^2 vs rpict" "$t" "$r" "$(ratio "$r" "$t")" "mean $dc" "(no converged)"
 add P3v "rpict office_view ${res}^2 vs vwrays + rtrace -n $cores" "$t" "$v" "$(ratio "$v" "$t")" "" ""
+fi
 
 # P4: the open-plan floor (Radiance's oconv makes the octrees both renderers read).
-if [ $small = 0 ]; then
+if [ $small = 0 ] && want P4; then
   op=$work/openplan
   mkdir -p "$op"
   "$build/bin/bench_gen_scenes" openplan 10 "$op" > /dev/null
@@ -134,6 +148,7 @@ if [ $small = 0 ]; then
 fi
 
 # P5
+if want P5; then
 warm "$scenes" sphere.oct
 t=$(radcl "$scenes" "$scenes/sphere_wall.pts" "$work/c5.txt" rtrace -n "$cores" -h -I $sphere sphere.oct)
 r=$(radiance "$scenes" "$scenes/sphere_wall.pts" "$work/r5.txt" rtrace -n "$cores" -h -I $sphere sphere.oct)
@@ -141,55 +156,21 @@ exact=$(awk '$1 == 8 { print $2 }' "$results/sphere_exact.txt")
 serr() { awk -v x="$exact" '{ s += $1; n++ } END { printf "%+.2f%%", 100 * (s / n - x) / x }' "$1"; }
 add P5 "integrating sphere, -ab 8" "$t" "$r" "$(ratio "$r" "$t")" "$(serr "$work/c5.txt")" \
   "$(serr "$work/r5.txt")"
+fi
 
-# The record: markdown table and an SVG bar chart of the speed-ups.
+# The record: the rows as TSV (with a line describing this run), then the table and chart.
 commit=${PEERS_COMMIT:-$(git -C "$root" rev-parse --short HEAD 2> /dev/null || echo unknown)}
 cpu=$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)
 device=$("$build/bin/radcl" devices 2> /dev/null | awk '/^\*/ { $1 = ""; print; exit }' | sed 's/^ *//')
 mkdir -p "$outdir"
 {
-  echo "# radcl and Radiance side by side$([ $small = 1 ] && echo ' (2-core mode)')"
-  echo
-  echo "Made by \`tests/bench/peers.sh$([ $small = 1 ] && echo ' --small')\` on $(date -u +%Y-%m-%d), radcl at"
-  echo "commit $commit, Radiance $("$rbin/rtrace" -version | head -n 1) with \`-n $cores\`."
-  echo "Machine: $cores cores ($cpu); radcl's device: ${device:-unknown}."
-  echo
-  echo "![speed-ups](${tag}.svg)"
-  echo
-  echo "| case | what | radcl s | Radiance s | speed-up | radcl error; Radiance error |"
-  echo "|---|---|---:|---:|---:|---|"
-} > "$work/head.md"
-{
-  cat "$work/head.md"
-  for row in "${rows[@]}"; do printf '%s\n' "$row"; done |
-    awk -F'\t' '{ printf "| %s | %s | %s | %s | %sx | %s; %s |\n", $1, $2, $3, $4, $5, $6, $7 }'
-  echo
-  echo "Errors: P1 on office_grid.pts's 77 points against the converged -ab 5 answer (mean, worst"
-  echo "luminance error); P5 against the exact answer; \"differ\" is the two renderers' mean"
-  echo "difference where no converged answer exists. Times are wall-clock seconds of warm runs"
-  echo "(the scene's device program compiled and cached beforehand)."
-} > "$outdir/$tag.md"
-# SVG: one bar per case, log scale from 0.1x to 100x, lines at 1x, 2x, 5x and 10x.
-for row in "${rows[@]}"; do printf '%s\n' "$row"; done | awk -F'\t' '{ print $1, $5 }' | awk -v small="$small" '
-  function y(v) { return 40 + 260 * (1 - (log(v) / log(10) + 1) / 3) }
-  { c[NR] = $1; s[NR] = ($2 > 0.1 ? $2 : 0.1) }
-  END {
-    w = 80 + 90 * NR
-    printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"340\" font-family=\"sans-serif\" font-size=\"12\">\n", w
-    printf "<text x=\"10\" y=\"20\" font-size=\"14\">radcl speed-up over Radiance -n N (log scale)%s</text>\n", small ? ", 2-core machine" : ""
-    split("0.1 1 2 5 10 100", g, " ")
-    for (k = 1; k <= 6; k++) {
-      printf "<line x1=\"60\" x2=\"%d\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"%s\"/>\n", w - 10, y(g[k]), y(g[k]), g[k] == 1 ? "black" : "#ccc"
-      printf "<text x=\"10\" y=\"%.1f\">%sx</text>\n", y(g[k]) + 4, g[k]
-    }
-    for (k = 1; k <= NR; k++) {
-      x = 70 + 90 * (k - 1); top = y(s[k]); base = y(1)
-      col = s[k] >= 1 ? "#2a7" : "#c43"
-      if (top < base) printf "<rect x=\"%d\" y=\"%.1f\" width=\"60\" height=\"%.1f\" fill=\"%s\"/>\n", x, top, base - top, col
-      else printf "<rect x=\"%d\" y=\"%.1f\" width=\"60\" height=\"%.1f\" fill=\"%s\"/>\n", x, base, top - base, col
-      printf "<text x=\"%d\" y=\"%.1f\" text-anchor=\"middle\">%.2fx</text>\n", x + 30, (top < base ? top - 4 : top + 14), s[k]
-      printf "<text x=\"%d\" y=\"325\" text-anchor=\"middle\">%s</text>\n", x + 30, c[k]
-    }
-    print "</svg>"
-  }' > "$outdir/$tag.svg"
-echo "wrote $outdir/$tag.md and $outdir/$tag.svg"
+  echo "# run: $(date -u +%Y-%m-%d), radcl at commit $commit on ${device:-an unknown device}" \
+    "($cores cores: $cpu), against $("$rbin/rtrace" -version | head -n 1) with -n $cores" \
+    "$([ $small = 1 ] && echo '(--small)')${PEERS_LABEL:+ [$PEERS_LABEL]}"
+  for row in "${rows[@]}"; do
+    printf '%s\n' "$row" | awk -F'\t' -v l="${PEERS_LABEL:-}" 'BEGIN { OFS = "\t" }
+      { if (l != "") $1 = $1 "/" l; print }'
+  done
+} > "$outdir/$tag.tsv"
+title="radcl and Radiance side by side$([ $small = 1 ] && echo ', 2-core mode')"
+"$root/tests/bench/peers_report.sh" "$outdir/$tag" "$title" "$outdir/$tag.tsv"
