@@ -8,7 +8,7 @@
  * Differences from Radiance: every accepted record is summed (Radiance's octree stops early
  * in a node whose children already weigh 0.05), the maximum angle is narrowed for low-weight
  * rays whenever the ray's weight is below 0.6 (Radiance looks at the first record of each
- * octree node). The corral bits' light-leak test is the host's (render/ambient_leaks.h): the
+ * octree node). The corral bits' light-leak test is the host's (ambient/leaks.h): the
  * records whose test ray it found blocked at this hit come in `blocked` ([count, index...]). */
 
 /* Radiance's tfunc(x0, x, 0): a hat falling from 1 at 0 to 0 at x0. */

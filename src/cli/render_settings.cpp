@@ -6,9 +6,9 @@
 #include <unistd.h>
 
 #include "radcl/ambient/ambient_file.h"
+#include "radcl/ambient/cache.h"
 #include "radcl/ambient/format.h"
 #include "radcl/geometry/scene_geometry.h"
-#include "radcl/render/ambient_cache.h"
 #include "radcl/util/error.h"
 
 namespace radcl::cli {
@@ -66,8 +66,8 @@ std::unique_ptr<ambient::AmbientFile> setup_ambient(render::RenderSettings& s,
     cube = std::max({b[1][0] - b[0][0], b[1][1] - b[0][1], b[1][2] - b[0][2]});
   }
   s.cube_size = cube;
-  s.ambient_min_radius = render::ambient_min_radius(cube, r.ambient_resolution);
-  s.ambient_max_radius = render::ambient_max_radius(cube, r.ambient_resolution);
+  s.ambient_min_radius = ambient::ambient_min_radius(cube, r.ambient_resolution);
+  s.ambient_max_radius = ambient::ambient_max_radius(cube, r.ambient_resolution);
   s.make_records = true;
   if (r.ambient_file.empty()) return nullptr;
   ambient::AmbientSettings as;

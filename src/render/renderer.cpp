@@ -13,17 +13,17 @@
 #include <utility>
 #include <vector>
 
+#include "radcl/ambient/cache.h"
 #include "radcl/ambient/dircode.h"
+#include "radcl/ambient/leaks.h"
+#include "radcl/ambient/record_maker.h"
+#include "radcl/ambient/spread_choice.h"
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
 #include "radcl/device/growing_buffer.h"
 #include "radcl/device/program.h"
-#include "radcl/render/ambient_cache.h"
-#include "radcl/render/ambient_leaks.h"
-#include "radcl/render/ambient_record.h"
 #include "radcl/render/id_slots.h"
 #include "radcl/render/phase_profile.h"
-#include "radcl/render/spread_choice.h"
 #include "radcl/render/tally_tree.h"
 #include "radcl/render/virtual_sources.h"
 #include "radcl/rng.h"
@@ -34,6 +34,9 @@
 #include <tbb/parallel_for.h>
 
 namespace radcl::render {
+
+// The irradiance cache's parts (trees, leak test, record kernel, spread choice) live in ambient/.
+using namespace ambient;
 
 namespace {
 
@@ -482,7 +485,7 @@ struct Renderer::Impl {
   // Radiance's samp_hemi for each chosen miss (ns x ns stratified cosine-weighted directions,
   // ns = sqrt(-ad x record weight), at least 7), the samples rendered as primaries one
   // ambient level deeper (their own misses make records first), then the record kernel
-  // (render/ambient_record.h) turns each complete hemisphere into a record.
+  // (ambient/record_maker.h) turns each complete hemisphere into a record.
   // -as for a record (Radiance's ambsupersamp): where the squared brightness differences of a
   // division's neighbours say the hemisphere varies most, more samples of that division are
   // rendered, as many as its share of the budget -as x weight (when that exceeds 8 and every
@@ -1279,7 +1282,7 @@ struct Renderer::Impl {
   }
 
   // Embree over the wave; depth-0 hits also fill the primaries' geometric results.
-  // Radiance's leak test for the cache records a wave's lookups may use (render/ambient_leaks.h):
+  // Radiance's leak test for the cache records a wave's lookups may use (ambient/leaks.h):
   // per hit on a surface that may look the cache up, the corral-marked records the kernel could
   // accept there are tested by a short ray; the blocked ones are listed for the kernel.
   void test_leaks(const std::vector<rc_ray>& queue, std::vector<rc_hit>& hits) {

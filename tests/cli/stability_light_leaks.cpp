@@ -1,6 +1,6 @@
 // Issue 8, case 4: thin geometry and closed corners next to bright light. Nothing may leak:
 // a closed box inside a lit room reads zero inside, with the irradiance cache too (records
-// outside its walls reach in, and Radiance's corral leak test, render/ambient_leaks.h, rules
+// outside its walls reach in, and Radiance's corral leak test, ambient/leaks.h, rules
 // them out); a 1 mm shelf casts a full shadow; a 0.1 mm glass pane transmits what glass
 // transmits; a room lit only from outside stays black along its closed corners.
 #include <cmath>

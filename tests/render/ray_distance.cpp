@@ -15,8 +15,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "radcl/ambient/cache.h"
 #include "radcl/device/context.h"
-#include "radcl/render/ambient_cache.h"
 #include "radcl/render/renderer.h"
 #include "scene_dir.h"
 #include "test_env.h"
@@ -239,8 +239,8 @@ TEST_F(RayDistance, AmbientSamplesContinueTheTree) {
   st.aa = 0.1;
   st.make_records = true;
   st.cube_size = 20;
-  st.ambient_min_radius = render::ambient_min_radius(20, 128);
-  st.ambient_max_radius = render::ambient_max_radius(20, 128);
+  st.ambient_min_radius = ambient::ambient_min_radius(20, 128);
+  st.ambient_max_radius = ambient::ambient_max_radius(20, 128);
   auto c = render(scene, rays, st);
   for (double x : c)
     EXPECT_NEAR(x, want, 0.02 * want) << "irradiance cache";

@@ -14,7 +14,7 @@
 #include "radcl/device/program.h"
 #include "radcl/device_types.h"
 
-namespace radcl::render {
+namespace radcl::ambient {
 
 // Radiance's AVGREFL: the reflectance makeambient assumes for the weight and the value.
 constexpr double kAvgRefl = 0.5;
@@ -65,4 +65,4 @@ private:
 ambient::AmbientRecord to_ambient_record(const rc_amb_record& r, std::uint32_t corral,
                                          const std::array<double, 3>& centre);
 
-} // namespace radcl::render
+} // namespace radcl::ambient

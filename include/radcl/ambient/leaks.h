@@ -11,9 +11,9 @@
 #include <functional>
 #include <vector>
 
-#include "radcl/render/ambient_cache.h"
+#include "radcl/ambient/cache.h"
 
-namespace radcl::render {
+namespace radcl::ambient {
 
 // A lookup the kernel may make at a hit: the point as the kernel sees it (re-centred, float),
 // the surface normal facing the ray (Radiance's r->ron), the ray's ambient level and weight;
@@ -67,4 +67,4 @@ private:
 // record kernel computes it: corral sectors follow its values.
 float corral_atan2a(float y, float x);
 
-} // namespace radcl::render
+} // namespace radcl::ambient

@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "radcl/render/spread_choice.h"
+#include "radcl/ambient/spread_choice.h"
 
-using radcl::render::choose_spread;
+using radcl::ambient::choose_spread;
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "radcl/render/spread_choice.h"
+#include "radcl/ambient/spread_choice.h"
 
 #include <tbb/parallel_for.h>
 
@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 
-namespace radcl::render {
+namespace radcl::ambient {
 
 namespace {
 
@@ -98,4 +98,4 @@ std::vector<std::uint32_t> choose_spread(std::span<const rc_ray> miss, double se
   return chosen;
 }
 
-} // namespace radcl::render
+} // namespace radcl::ambient

@@ -1,4 +1,4 @@
-// The BVH over irradiance-cache records (render/ambient_cache.h): every record in exactly one
+// The BVH over irradiance-cache records (ambient/cache.h): every record in exactly one
 // leaf, every record's region inside the boxes of the nodes above it, and skip links that
 // visit each subtree once; the minimum radius as Radiance's setambres().
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <random>
 #include <set>
 
+#include "radcl/ambient/cache.h"
 #include "radcl/ambient/dircode.h"
-#include "radcl/render/ambient_cache.h"
 
 using namespace radcl;
 
@@ -44,7 +44,7 @@ std::vector<ambient::AmbientRecord> random_records(int n, unsigned seed) {
 
 // Walks the tree: every node's subtree is [i + 1, skip) and its boxes hold its records' regions.
 // Returns the number of leaves.
-std::size_t check_tree(const render::AmbientCacheBuffers& b, double aa) {
+std::size_t check_tree(const ambient::AmbientCacheBuffers& b, double aa) {
   std::vector<std::size_t> stack;
   std::size_t leaves = 0;
   for (std::size_t i = 0; i < b.nodes.size(); ++i) {
@@ -92,7 +92,7 @@ TEST(AmbientCacheBvh, EveryRecordOnceInsideItsAncestors) {
     auto recs = random_records(n, 17u + n);
     const std::array<double, 3> centre{1, 2, 3};
     const double aa = 0.2;
-    render::AmbientCacheBuffers b = render::build_ambient_cache(recs, centre, aa);
+    ambient::AmbientCacheBuffers b = ambient::build_ambient_cache(recs, centre, aa);
     ASSERT_EQ(b.records.size(), recs.size());
     std::set<int> seen;
     for (const rc_amb_record& r : b.records)
@@ -130,7 +130,7 @@ TEST(AmbientCacheBvh, NormalConesKeepEveryAcceptableRecord) {
     recs.push_back(a);
   }
   const double aa = 0.2;
-  render::AmbientCacheBuffers b = render::build_ambient_cache(recs, {0, 0, 0}, aa);
+  ambient::AmbientCacheBuffers b = ambient::build_ambient_cache(recs, {0, 0, 0}, aa);
   check_tree(b, aa);
   std::mt19937 g(11);
   std::uniform_real_distribution<double> s(-1, 1), th(0.0, 1.5707963);
@@ -148,7 +148,7 @@ TEST(AmbientCacheBvh, NormalConesKeepEveryAcceptableRecord) {
     for (std::uint32_t i = 0; i < b.nodes.size();) {
       const rc_amb_node& nd = b.nodes[i];
       if (p[0] < nd.lo.x || p[1] < nd.lo.y || p[2] < nd.lo.z || p[0] > nd.hi.x || p[1] > nd.hi.y ||
-          p[2] > nd.hi.z || !render::node_cone_may_hold(nd, n, ct, st, false)) {
+          p[2] > nd.hi.z || !ambient::node_cone_may_hold(nd, n, ct, st, false)) {
         skipped += nd.skip - i;
         i = nd.skip;
         continue;
@@ -173,17 +173,17 @@ TEST(AmbientCacheBvh, NormalConesKeepEveryAcceptableRecord) {
 }
 
 TEST(AmbientCacheBvh, NoRecordsNoNodes) {
-  render::AmbientCacheBuffers b = render::build_ambient_cache({}, {0, 0, 0}, 0.1);
+  ambient::AmbientCacheBuffers b = ambient::build_ambient_cache({}, {0, 0, 0}, 0.1);
   EXPECT_TRUE(b.nodes.empty());
   EXPECT_TRUE(b.records.empty());
 }
 
 TEST(AmbientCacheBvh, MinimumRadiusAsSetambres) {
-  EXPECT_DOUBLE_EQ(render::ambient_min_radius(25.6, 256), 0.1);
-  EXPECT_DOUBLE_EQ(render::ambient_min_radius(25.6, 0), 1e-5);
-  EXPECT_DOUBLE_EQ(render::ambient_max_radius(25.6, 256), 0.2 * 25.6); // 6.4 > a fifth
-  EXPECT_DOUBLE_EQ(render::ambient_max_radius(1000, 1000), 64.0);
-  EXPECT_DOUBLE_EQ(render::ambient_max_radius(25.6, 0), 0.2 * 25.6);
+  EXPECT_DOUBLE_EQ(ambient::ambient_min_radius(25.6, 256), 0.1);
+  EXPECT_DOUBLE_EQ(ambient::ambient_min_radius(25.6, 0), 1e-5);
+  EXPECT_DOUBLE_EQ(ambient::ambient_max_radius(25.6, 256), 0.2 * 25.6); // 6.4 > a fifth
+  EXPECT_DOUBLE_EQ(ambient::ambient_max_radius(1000, 1000), 64.0);
+  EXPECT_DOUBLE_EQ(ambient::ambient_max_radius(25.6, 0), 0.2 * 25.6);
 }
 
 // -aw (Radiance's dumbamb): the log-domain running average of -av with the records' values.
@@ -194,24 +194,24 @@ TEST(AmbientValueWeight, AveragesInTheLogDomain) {
   recs[2].val = {0, 0, 0}; // black values are not counted
   const double k = std::log(0.5);
   // Grey -av 2 with weight 2: exp((2 ln 2 + ln 1 + ln 4 + 2 k) / 4) / 2 times -av.
-  auto v = render::averaged_ambient_value({2, 2, 2}, 2, recs);
+  auto v = ambient::averaged_ambient_value({2, 2, 2}, 2, recs);
   double f = std::exp((2 * std::log(2.0) + std::log(4.0) + 2 * k) / 4) / 2;
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(v[c], 2 * f, 1e-12);
   // A coloured -av keeps its colour, scaled by its brightness's new average.
-  v = render::averaged_ambient_value({1, 0.5, 0.25}, 1, recs);
+  v = ambient::averaged_ambient_value({1, 0.5, 0.25}, 1, recs);
   double l = 0.265074126 * 1 + 0.670114631 * 0.5 + 0.064811243 * 0.25;
   f = std::exp((std::log(l) + std::log(4.0) + 2 * k) / 3) / l;
   EXPECT_NEAR(v[0], f, 1e-12);
   EXPECT_NEAR(v[1], 0.5 * f, 1e-12);
   EXPECT_NEAR(v[2], 0.25 * f, 1e-12);
   // Black -av: the records' geometric mean times 0.5, grey.
-  v = render::averaged_ambient_value({0, 0, 0}, 1, recs);
+  v = ambient::averaged_ambient_value({0, 0, 0}, 1, recs);
   EXPECT_NEAR(v[1], 0.5 * 2.0, 1e-12);
   // -aw 0, or no value to average: -av unchanged.
-  v = render::averaged_ambient_value({2, 3, 4}, 0, recs);
+  v = ambient::averaged_ambient_value({2, 3, 4}, 0, recs);
   EXPECT_EQ(v[1], 3);
-  v = render::averaged_ambient_value({2, 3, 4}, 5, {});
+  v = ambient::averaged_ambient_value({2, 3, 4}, 5, {});
   EXPECT_EQ(v[2], 4);
 }
 
@@ -223,10 +223,10 @@ TEST(AmbientCacheBvh, JoinedTreesHoldBothRecordSets) {
   for (auto [na, nb] : {std::pair{0, 5}, {5, 0}, {1, 1}, {300, 7}, {2000, 600}}) {
     auto all = random_records(na + nb, 99u + na);
     std::span<const ambient::AmbientRecord> sa(all.data(), na), sb(all.data() + na, nb);
-    render::AmbientCacheBuffers a = render::build_ambient_cache(sa, {0, 0, 0}, aa);
-    render::AmbientCacheBuffers b = render::build_ambient_cache(sb, {0, 0, 0}, aa);
-    render::AmbientCacheBuffers j =
-        render::join_ambient_caches(a, b, static_cast<std::uint32_t>(na));
+    ambient::AmbientCacheBuffers a = ambient::build_ambient_cache(sa, {0, 0, 0}, aa);
+    ambient::AmbientCacheBuffers b = ambient::build_ambient_cache(sb, {0, 0, 0}, aa);
+    ambient::AmbientCacheBuffers j =
+        ambient::join_ambient_caches(a, b, static_cast<std::uint32_t>(na));
     ASSERT_EQ(j.records.size(), all.size());
     ASSERT_EQ(j.source.size(), all.size());
     ASSERT_EQ(j.corral.size(), all.size());

@@ -1,4 +1,4 @@
-#include "radcl/render/ambient_cache.h"
+#include "radcl/ambient/cache.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "radcl/ambient/dircode.h"
 #include "radcl/util/error.h"
 
-namespace radcl::render {
+namespace radcl::ambient {
 namespace {
 
 constexpr unsigned kMaxLeaf = 8;
@@ -288,4 +288,4 @@ std::array<double, 3> averaged_ambient_value(const std::array<double, 3>& av, in
   return {g, g, g};
 }
 
-} // namespace radcl::render
+} // namespace radcl::ambient

@@ -11,7 +11,7 @@
 #include "radcl/ambient/record.h"
 #include "radcl/device_types.h"
 
-namespace radcl::render {
+namespace radcl::ambient {
 
 struct AmbientCacheBuffers {
   std::vector<rc_amb_record> records; // in leaf order
@@ -56,4 +56,4 @@ double ambient_max_radius(double cube_size, int ar);
 std::array<double, 3> averaged_ambient_value(const std::array<double, 3>& av, int aw,
                                              std::span<const ambient::AmbientRecord> records);
 
-} // namespace radcl::render
+} // namespace radcl::ambient

@@ -1,4 +1,4 @@
-#include "radcl/render/ambient_record.h"
+#include "radcl/ambient/record_maker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
 
-namespace radcl::render {
+namespace radcl::ambient {
 namespace {
 
 rc_float4 f4(double x, double y, double z, double w) {
@@ -95,4 +95,4 @@ ambient::AmbientRecord to_ambient_record(const rc_amb_record& r, std::uint32_t c
   return a;
 }
 
-} // namespace radcl::render
+} // namespace radcl::ambient

@@ -12,10 +12,10 @@
 
 #include "radcl/device_types.h"
 
-namespace radcl::render {
+namespace radcl::ambient {
 
 // Indices into `miss` of the chosen ones, in increasing order. A miss's point is its org.xyz,
 // its facing direction dir.xyz, its level ambient_depth.
 std::vector<std::uint32_t> choose_spread(std::span<const rc_ray> miss, double sep);
 
-} // namespace radcl::render
+} // namespace radcl::ambient

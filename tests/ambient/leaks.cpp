@@ -1,4 +1,4 @@
-// The irradiance cache's light-leak test on the host (render/ambient_leaks.h, Radiance's
+// The irradiance cache's light-leak test on the host (ambient/leaks.h, Radiance's
 // plugaleak): which records are tested, in which corral sector a lookup point lies, and where
 // the test ray goes (20 degrees above the lookup's tangent plane, towards the point on the
 // record's normal above its position).
@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "radcl/ambient/dircode.h"
-#include "radcl/render/ambient_leaks.h"
+#include "radcl/ambient/leaks.h"
 
 using namespace radcl;
-using radcl::render::LeakLookup;
+using radcl::ambient::LeakLookup;
 
 namespace {
 
@@ -40,7 +40,7 @@ struct Segments {
   bool answer = true;
   std::array<double, 3> org{}, dir{};
   double tmax = 0;
-  render::SegmentBlocked fn() {
+  ambient::SegmentBlocked fn() {
     return [this](const std::array<double, 3>& o, const std::array<double, 3>& d, double t,
                   const std::array<double, 3>&) {
       ++calls;
@@ -61,7 +61,7 @@ TEST(AmbientLeaks, AtanMatchesTheSectorsOfAFullTurn) {
   for (int k = 0; k < 64; ++k) {
     const double a = (k + 0.5) * pi / 32;
     double v =
-        render::corral_atan2a(static_cast<float>(std::sin(a)), static_cast<float>(std::cos(a)));
+        ambient::corral_atan2a(static_cast<float>(std::sin(a)), static_cast<float>(std::cos(a)));
     if (v < 0) v += 2 * pi;
     EXPECT_NEAR(v, a, 0.01) << k;
   }
@@ -69,8 +69,8 @@ TEST(AmbientLeaks, AtanMatchesTheSectorsOfAFullTurn) {
 
 TEST(AmbientLeaks, BlockedTestRayRulesTheRecordOut) {
   std::vector<ambient::AmbientRecord> recs = {record(1u)}; // sector 0: along +u
-  render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);
-  render::LeakTester t(&cache, kAa, kMinarad);
+  ambient::AmbientCacheBuffers cache = ambient::build_ambient_cache(recs, {0, 0, 0}, kAa);
+  ambient::LeakTester t(&cache, kAa, kMinarad);
   ASSERT_TRUE(t.active());
   Segments s;
   std::vector<std::uint32_t> out;
@@ -96,8 +96,8 @@ TEST(AmbientLeaks, BlockedTestRayRulesTheRecordOut) {
 TEST(AmbientLeaks, OnlyMarkedSectorsAreTested) {
   // Bit 8: angles pi/2 .. 9pi/16 (towards +v, slightly past it).
   std::vector<ambient::AmbientRecord> recs = {record(1u << 8)};
-  render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);
-  render::LeakTester t(&cache, kAa, kMinarad);
+  ambient::AmbientCacheBuffers cache = ambient::build_ambient_cache(recs, {0, 0, 0}, kAa);
+  ambient::LeakTester t(&cache, kAa, kMinarad);
   Segments s;
   std::vector<std::uint32_t> out;
   t.find(at(0.05f, 0.0f), s.fn(), out);   // sector 0
@@ -111,8 +111,8 @@ TEST(AmbientLeaks, OnlyMarkedSectorsAreTested) {
 
 TEST(AmbientLeaks, RecordsTheKernelRejectsAreNotTested) {
   std::vector<ambient::AmbientRecord> recs = {record(~0u), record(~0u, 1)};
-  render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);
-  render::LeakTester t(&cache, kAa, kMinarad);
+  ambient::AmbientCacheBuffers cache = ambient::build_ambient_cache(recs, {0, 0, 0}, kAa);
+  ambient::LeakTester t(&cache, kAa, kMinarad);
   Segments s;
   std::vector<std::uint32_t> out;
   t.find(at(0.2f, 0.0f), s.fn(), out);        // outside the ellipse (aa x rad[0] = 0.1 along u)
@@ -136,8 +136,8 @@ TEST(AmbientLeaks, RecordsTheKernelRejectsAreNotTested) {
 // maxangle) and skips the orientation trees of surfaces facing elsewhere.
 TEST(AmbientLeaks, ExactNormalsTestEveryRecordTheKernelAccepts) {
   std::vector<ambient::AmbientRecord> recs = {record(~0u)};
-  render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);
-  render::LeakTester t(&cache, kAa, kMinarad);
+  ambient::AmbientCacheBuffers cache = ambient::build_ambient_cache(recs, {0, 0, 0}, kAa);
+  ambient::LeakTester t(&cache, kAa, kMinarad);
   const double maxangle = 10 * 3.14159265358979323846 / 180 + kAa;
   const double reach = 2 * std::asin(maxangle / 2); // the kernel's widest accepted angle
   auto tilted = [&](double ang) {
@@ -156,8 +156,8 @@ TEST(AmbientLeaks, ExactNormalsTestEveryRecordTheKernelAccepts) {
 
 TEST(AmbientLeaks, UnmarkedCacheIsInactive) {
   std::vector<ambient::AmbientRecord> recs = {record(0)};
-  render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);
-  render::LeakTester t(&cache, kAa, kMinarad);
+  ambient::AmbientCacheBuffers cache = ambient::build_ambient_cache(recs, {0, 0, 0}, kAa);
+  ambient::LeakTester t(&cache, kAa, kMinarad);
   EXPECT_FALSE(t.active());
   Segments s;
   std::vector<std::uint32_t> out;
@@ -169,8 +169,8 @@ TEST(AmbientLeaks, UnmarkedCacheIsInactive) {
 // never a leak: Radiance's test would meet a double root there and plug it.
 TEST(AmbientLeaks, RecordAtThePointIsNoLeak) {
   std::vector<ambient::AmbientRecord> recs = {record(~0u)};
-  render::AmbientCacheBuffers cache = render::build_ambient_cache(recs, {0, 0, 0}, kAa);
-  render::LeakTester t(&cache, kAa, kMinarad);
+  ambient::AmbientCacheBuffers cache = ambient::build_ambient_cache(recs, {0, 0, 0}, kAa);
+  ambient::LeakTester t(&cache, kAa, kMinarad);
   Segments s;
   std::vector<std::uint32_t> out;
   t.find(at(0.0f, 0.0f), s.fn(), out);

@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "radcl/ambient/dircode.h"
+#include "radcl/ambient/record_maker.h"
 #include "radcl/device/context.h"
-#include "radcl/render/ambient_record.h"
 
 using namespace radcl;
-using render::HemisphereSettings;
+using ambient::HemisphereSettings;
 
 namespace {
 
@@ -285,7 +285,7 @@ struct Hemi {
 Hemi make(const Scene& scene, int ns, HemisphereSettings set, double wt = 1.0, int level = 0,
           const Frame& f = Frame()) {
   Hemi out;
-  out.h = render::make_hemisphere(f.o, f.n, f.ux, ns, 0, level, wt, set);
+  out.h = ambient::make_hemisphere(f.o, f.n, f.ux, ns, 0, level, wt, set);
   for (int i = 0; i < ns; ++i)
     for (int j = 0; j < ns; ++j) {
       const D3 dl = stratum_dir(ns, i, j);
@@ -308,8 +308,8 @@ struct Result {
 };
 
 Result run(const Hemi& hm) {
-  static render::RecordMaker maker(device::default_context());
-  render::MadeRecords m = maker.make({&hm.h, 1}, hm.s);
+  static ambient::RecordMaker maker(device::default_context());
+  ambient::MadeRecords m = maker.make({&hm.h, 1}, hm.s);
   return {m.records.at(0), m.made.at(0)};
 }
 
@@ -678,8 +678,8 @@ TEST(AmbientRecord, BatchMatchesSingles) {
     hemis.push_back(h.h);
     samples.insert(samples.end(), h.s.begin(), h.s.end());
   }
-  render::RecordMaker maker(device::default_context());
-  render::MadeRecords m = maker.make(hemis, samples);
+  ambient::RecordMaker maker(device::default_context());
+  ambient::MadeRecords m = maker.make(hemis, samples);
   ASSERT_EQ(m.records.size(), hs.size());
   for (std::size_t i = 0; i < hs.size(); ++i) {
     SCOPED_TRACE(i);
@@ -690,16 +690,16 @@ TEST(AmbientRecord, BatchMatchesSingles) {
 }
 
 TEST(AmbientRecord, WeightAndFileForm) {
-  EXPECT_FLOAT_EQ(render::ambient_record_weight(0, 1.0), 1.0f);
-  EXPECT_FLOAT_EQ(render::ambient_record_weight(2, 0.5), 0.25f);
-  EXPECT_FLOAT_EQ(render::ambient_record_weight(1, 0.04), 0.05f); // 1.25 x the ray's weight
-  EXPECT_FLOAT_EQ(render::ambient_record_weight(1, 0.05), 0.5f);
+  EXPECT_FLOAT_EQ(ambient::ambient_record_weight(0, 1.0), 1.0f);
+  EXPECT_FLOAT_EQ(ambient::ambient_record_weight(2, 0.5), 0.25f);
+  EXPECT_FLOAT_EQ(ambient::ambient_record_weight(1, 0.04), 0.05f); // 1.25 x the ray's weight
+  EXPECT_FLOAT_EQ(ambient::ambient_record_weight(1, 0.05), 0.5f);
 
   Hemi hm = make(wall(0.7, 1.0), 16, settings(0.01, 10, 0.1), 0.5, 1);
   Result k = run(hm);
   ASSERT_EQ(k.made.status, RC_AMB_RECORD);
   const std::array<double, 3> centre{100, -50, 20};
-  ambient::AmbientRecord a = render::to_ambient_record(k.rec, k.made.corral, centre);
+  ambient::AmbientRecord a = ambient::to_ambient_record(k.rec, k.made.corral, centre);
   EXPECT_FLOAT_EQ(a.pos[0], float(hm.h.pos.x + 100.0));
   EXPECT_FLOAT_EQ(a.pos[1], float(hm.h.pos.y - 50.0));
   EXPECT_FLOAT_EQ(a.pos[2], float(hm.h.pos.z + 20.0));

@@ -1,10 +1,10 @@
-#include "radcl/render/ambient_leaks.h"
+#include "radcl/ambient/leaks.h"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-namespace radcl::render {
+namespace radcl::ambient {
 namespace {
 
 constexpr double kFtiny = 1e-6;        // Radiance's FTINY
@@ -161,4 +161,4 @@ std::size_t LeakTester::find(const LeakLookup& q, const SegmentBlocked& segment_
   return traced;
 }
 
-} // namespace radcl::render
+} // namespace radcl::ambient
