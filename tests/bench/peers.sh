@@ -89,6 +89,15 @@ lum() { "$build/bin/bench_picture_mean" "$1"; }
 warm() { # dir octree: compiles the scene's program
   ( cd "$1" && head -n 1 "$work/p2.pts" | "$build/bin/rtrace" -h -I -ab 1 -aa 0.2 "$2" > /dev/null )
 }
+# sensors case dir points octree options...: both renderers' rtrace -I over the points after a
+# warm-up; sets t and r (seconds), the values in $work/c<case>.txt and $work/r<case>.txt.
+sensors() {
+  local c=$1 dir=$2 pts=$3 oct=$4
+  shift 4
+  warm "$dir" "$oct"
+  t=$(radcl "$dir" "$pts" "$work/c$c.txt" rtrace -n "$cores" -h -I "$@" "$oct")
+  r=$(radiance "$dir" "$pts" "$work/r$c.txt" rtrace -n "$cores" -h -I "$@" "$oct")
+}
 
 cases=${PEERS_CASES:-P1 P2 P3 P4 P5}
 want() { [[ " $cases " == *" $1 "* ]]; }
@@ -99,9 +108,7 @@ printf '%-4s %-46s %9s %9s %8s  %-16s %-16s\n' case what radcl_s radiance_s spee
 
 # P1
 if want P1; then
-warm "$scenes" office_clear.oct
-t=$(radcl "$scenes" "$work/p1.pts" "$work/c1.txt" rtrace -n "$cores" -h -I $default office_clear.oct)
-r=$(radiance "$scenes" "$work/p1.pts" "$work/r1.txt" rtrace -n "$cores" -h -I $default office_clear.oct)
+sensors 1 "$scenes" "$work/p1.pts" office_clear.oct $default
 head -n 77 "$work/c1.txt" > "$work/c1h.txt"
 head -n 77 "$work/r1.txt" > "$work/r1h.txt"
 add P1 "office_clear, $n1 points, cache" "$t" "$r" "$(ratio "$r" "$t")" \
@@ -111,9 +118,7 @@ fi
 
 # P2
 if want P2; then
-warm "$scenes" office_clear.oct
-t=$(radcl "$scenes" "$work/p2.pts" "$work/c2.txt" rtrace -n "$cores" -h -I $nocache office_clear.oct)
-r=$(radiance "$scenes" "$work/p2.pts" "$work/r2.txt" rtrace -n "$cores" -h -I $nocache office_clear.oct)
+sensors 2 "$scenes" "$work/p2.pts" office_clear.oct $nocache
 add P2 "office_clear, $n2 points, -aa 0" "$t" "$r" "$(ratio "$r" "$t")" \
   "differ $(differ "$work/c2.txt" "$work/r2.txt")" "(no converged)"
 fi
@@ -140,18 +145,14 @@ if [ $small = 0 ] && want P4; then
   ( cd "$op" && RAYPATH=.:$rlib "$rbin/oconv" -f office_unit.rad > office_unit.oct &&
     RAYPATH=.:$rlib "$rbin/oconv" office_sky_clear.rad floor.rad > openplan.oct )
   grid 10000 0.2 59.8 0.2 23.8 0.8 > "$work/p4.pts"
-  warm "$op" openplan.oct
-  t=$(radcl "$op" "$work/p4.pts" "$work/c4.txt" rtrace -n "$cores" -h -I $default openplan.oct)
-  r=$(radiance "$op" "$work/p4.pts" "$work/r4.txt" rtrace -n "$cores" -h -I $default openplan.oct)
+  sensors 4 "$op" "$work/p4.pts" openplan.oct $default
   add P4 "open-plan floor, 1.19M triangles, 10000 pts" "$t" "$r" "$(ratio "$r" "$t")" \
     "differ $(differ "$work/c4.txt" "$work/r4.txt")" "(no converged)"
 fi
 
 # P5
 if want P5; then
-warm "$scenes" sphere.oct
-t=$(radcl "$scenes" "$scenes/sphere_wall.pts" "$work/c5.txt" rtrace -n "$cores" -h -I $sphere sphere.oct)
-r=$(radiance "$scenes" "$scenes/sphere_wall.pts" "$work/r5.txt" rtrace -n "$cores" -h -I $sphere sphere.oct)
+sensors 5 "$scenes" "$scenes/sphere_wall.pts" sphere.oct $sphere
 exact=$(awk '$1 == 8 { print $2 }' "$results/sphere_exact.txt")
 serr() { awk -v x="$exact" '{ s += $1; n++ } END { printf "%+.2f%%", 100 * (s / n - x) / x }' "$1"; }
 add P5 "integrating sphere, -ab 8" "$t" "$r" "$(ratio "$r" "$t")" "$(serr "$work/c5.txt")" \

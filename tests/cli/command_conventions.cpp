@@ -10,6 +10,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
@@ -18,20 +19,12 @@ using radcl::test::run_command;
 
 namespace {
 
-class CommandConventions : public ::testing::Test {
+class CommandConventions : public radcl::test::TempDir {
 protected:
-  fs::path dir;
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir = fs::temp_directory_path() /
-          ("radcl_cmd_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-  }
-  void TearDown() override { fs::remove_all(dir); }
   // Status of `cmd` (stderr kept apart when `err` is given).
-  static int run(const std::string& cmd, std::string* out, std::string* err = nullptr) {
+  int run(const std::string& cmd, std::string* out, std::string* err = nullptr) {
     if (!err) return run_command(cmd, out);
-    const std::string e = fs::temp_directory_path() / ("radcl_cmd_err_" + std::to_string(getpid()));
+    const std::string e = (dir / "stderr.txt").string();
     int rc = run_command("(" + cmd + " 2>" + e + ")", out);
     std::ifstream in(e);
     err->assign(std::istreambuf_iterator<char>(in), {});

@@ -17,6 +17,7 @@
 #include "radcl/image/picture.h"
 #include "radcl/image/view_ray.h"
 #include "radcl/options/view.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
@@ -26,17 +27,8 @@ using radcl::test::run_command;
 
 namespace {
 
-class RadianceWorkflows : public ::testing::Test {
+class RadianceWorkflows : public radcl::test::TempDir {
 protected:
-  fs::path dir;
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir = fs::temp_directory_path() /
-          ("radcl_workflow_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-  }
-  void TearDown() override { fs::remove_all(dir); }
-
   // Runs `cmd` in the reference scenes' folder (the octrees name their files from there).
   static int in_scenes(const std::string& cmd, std::string* out = nullptr) {
     return run_command("cd " + data("scenes") + " && " + cmd, out);

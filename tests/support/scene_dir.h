@@ -14,6 +14,7 @@
 #include "radcl/render/irradiance_meter.h"
 #include "radcl/render/renderer.h"
 #include "radcl/scene/loader.h"
+#include "temp_dir.h"
 
 namespace radcl::test {
 
@@ -28,21 +29,17 @@ inline render::RenderSettings direct_light_settings(bool meters) {
   return st;
 }
 
-class SceneDir : public ::testing::Test {
+// A TempDir that is also the current directory while the test runs.
+class SceneDir : public TempDir {
 protected:
-  std::filesystem::path dir;
-
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir = std::filesystem::temp_directory_path() /
-          ("radcl_" + std::string(info->test_suite_name()) + "_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    TempDir::SetUp();
     ASSERT_NE(getcwd(cwd_, sizeof cwd_), nullptr);
     ASSERT_EQ(chdir(dir.c_str()), 0);
   }
   void TearDown() override {
     EXPECT_EQ(chdir(cwd_), 0);
-    std::filesystem::remove_all(dir);
+    TempDir::TearDown();
   }
 
   // The results of `rays` through scene file `file` (in the folder) with settings `st`.
