@@ -1,6 +1,7 @@
 // -as with -aa 0: Radiance's super-sampling of a hemisphere's high-variance divisions, done in
 // a second pass once the first samples' values are known (render/tally_tree.h).
 #include <cmath>
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -154,6 +155,19 @@ TEST(AmbientSupersampling, SameMeanLessNoise) {
 // The second pass is keyed like the first: results do not depend on how rays are batched.
 TEST(AmbientSupersampling, IndependentOfWaveSize) {
   SphereRun a = sphere(2, 128), b = sphere(2, 128, 5);
+  ASSERT_EQ(a.res.size(), b.res.size());
+  for (std::size_t i = 0; i < a.res.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(a.res[i].value[c], b.res[i].value[c]) << "ray " << i;
+}
+
+// ... nor on how a generation of rays is chunked (RADCL_CHUNK_RAYS): the tally tree sees every
+// ray in queue order either way.
+TEST(AmbientSupersampling, IndependentOfChunkSize) {
+  SphereRun a = sphere(2, 128);
+  setenv("RADCL_CHUNK_RAYS", "300", 1);
+  SphereRun b = sphere(2, 128);
+  unsetenv("RADCL_CHUNK_RAYS");
   ASSERT_EQ(a.res.size(), b.res.size());
   for (std::size_t i = 0; i < a.res.size(); ++i)
     for (int c = 0; c < 3; ++c)

@@ -66,6 +66,18 @@ TEST(Determinism, SameWhenWavesAreSliced) {
   EXPECT_TRUE(identical(base, sliced));
 }
 
+// Each generation of rays is traced and shaded in chunks (RADCL_CHUNK_RAYS); chunks of a few
+// rays (here with -I meters, whose first hits are made, not traced) must not change a bit.
+TEST(Determinism, SameWhateverTheChunkSize) {
+  auto base = run(1 << 18, 2, 42);
+  for (const char* c : {"1", "37", "4096"}) {
+    setenv("RADCL_CHUNK_RAYS", c, 1);
+    auto chunked = run(1 << 18, 2, 42);
+    unsetenv("RADCL_CHUNK_RAYS");
+    EXPECT_TRUE(identical(base, chunked)) << "chunks of " << c << " rays";
+  }
+}
+
 TEST(Determinism, SeedChangesTheNoise) {
   auto a = run(1 << 18, 2, 1), b = run(1 << 18, 2, 2);
   EXPECT_FALSE(identical(a, b));
