@@ -21,6 +21,8 @@
 #             '|'-separated list of RADCL_CL_OPTIONS values; default: none); COLD_SCENES
 #             lists octree:sensor-file pairs (a file without a suffix takes .pts; default:
 #             office_clear and luminaires)
+#   sh        the command in DEVICE_SH, run by bash with the bundle's programs and libraries set
+#             up ($b/bin holds radcl's programs, $RADIANCE_BIN Radiance's), from the root
 #   profile   the benchmark's rtrace cases and rpict 256^2 on the GPU with RADCL_PROFILE=1: wall
 #             time by phase of the renderer's work (PROFILE_DEVICE=pocl: on PoCL instead)
 # usage: scripts/device-run.sh devices tests bench ...
@@ -137,6 +139,7 @@ for what in "$@"; do
   peers-cpu) RADCL_DEVICE=pocl PEERS_OUT=$out/pocl "$root/tests/bench/peers.sh" ${PEERS_ARGS:-} "$b/build" 2>&1 | tee "$out/peers_pocl.txt" ;;
   bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;
   profile) profile 2>&1 | tee "$out/profile.txt" ;;
+  sh) b=$b out=$out bash -c "${DEVICE_SH:?set DEVICE_SH}" 2>&1 | tee -a "$out/sh.txt" ;;
   cold) RADCL_DEVICE=nvidia cold 2>&1 | tee "$out/cold.txt" ;;
   rounds) (cd "$root/tests/data/scenes" && RADCL_DEVICE=nvidia RADCL_DEBUG_CACHE=1 "$b/bin/rtrace" \
       -n "$(nproc)" -u- -h -I -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 office_clear.oct \
