@@ -891,6 +891,25 @@ struct Renderer::Impl {
     return id_slot.empty() ? primary - batch_first : id_slot.at(primary);
   }
 
+  // Vectors lent to a batch and given back, emptied but with their room, when it ends (a
+  // batch inside another, as a record's hemisphere inside a cache pass, takes others).
+  template <class T> struct Spare {
+    std::vector<std::vector<T>>& pool;
+    std::vector<T> v;
+    explicit Spare(std::vector<std::vector<T>>& p) : pool(p) {
+      if (!pool.empty()) {
+        v = std::move(pool.back());
+        pool.pop_back();
+      }
+    }
+    ~Spare() {
+      v.clear();
+      pool.push_back(std::move(v));
+    }
+  };
+  std::vector<std::vector<rc_ray>> spare_rays;
+  std::vector<std::vector<rc_hit>> spare_hits;
+
   void render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
                     std::size_t first_index) {
     Timed timed(prof, Phase::Batch);
@@ -903,8 +922,13 @@ struct Renderer::Impl {
         ids[k] = prim[k].id != RC_NONE ? prim[k].id : static_cast<std::uint32_t>(first_index + k);
       id_slot.assign(ids);
     }
-    std::vector<rc_ray> queue(prim.size());
-    std::vector<rc_hit> hits;
+    // The generation queues come from a pool that outlives the batch: growing fresh ones to
+    // millions of rays in every batch paged in (and cleared) new memory each time.
+    Spare<rc_ray> queue_hold(spare_rays), next_hold(spare_rays);
+    Spare<rc_hit> hits_hold(spare_hits);
+    std::vector<rc_ray>& queue = queue_hold.v;
+    std::vector<rc_hit>& hits = hits_hold.v;
+    queue.resize(prim.size());
     leak_lists.assign(1, 0u);
     leak_uploaded = 0;
     std::vector<Vec3d> sums(prim.size(), Vec3d{0, 0, 0});
@@ -963,7 +987,7 @@ struct Renderer::Impl {
     const std::vector<rc_hit> meters =
         (settings.irradiance_I && nesting == 0) ? std::move(hits) : std::vector<rc_hit>{};
     bool first_wave = true;
-    std::vector<rc_ray> next;
+    std::vector<rc_ray>& next = next_hold.v;
     const std::size_t chunk = chunk_rays();
     while (!queue.empty()) {
       const std::size_t n = queue.size();
