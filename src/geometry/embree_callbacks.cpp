@@ -97,6 +97,7 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
 void triangle_filter(const RTCFilterFunctionNArguments* args) {
   if (args->valid[0] == 0) return;
   auto* rc = reinterpret_cast<RayContext*>(args->context);
+  if (rc->raw) return;
   const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
   const unsigned inst = RTCHitN_instID(args->hit, args->N, 0, 0);
   const unsigned prim = RTCHitN_primID(args->hit, args->N, 0);

@@ -113,6 +113,7 @@ struct RayContext {
   double best_t = 0;
   std::uint64_t best_key = 0;
   bool closest = false; // a closest-hit query (not an occlusion test)
+  bool raw = false;     // SceneGeometry::intersect_raw: the filter accepts every candidate
   // Whether a candidate at exact distance cand_t loses to the current closest hit.
   bool loses(double cand_t, std::uint64_t key) const {
     return best && (cand_t > best_t || (cand_t == best_t && key > best_key));

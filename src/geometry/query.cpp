@@ -155,4 +155,37 @@ void SceneGeometry::occluded(std::span<const Ray> rays, std::span<std::uint8_t> 
   });
 }
 
+void SceneGeometry::intersect_raw(std::span<const Ray> rays, std::span<float> t) const {
+  if (t.size() != rays.size()) throw std::invalid_argument("intersect_raw: size mismatch");
+  const Impl& g = *impl_;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 64), [&](const auto& r) {
+    RayContext rc;
+    rc.impl = &g;
+    rc.raw = true;
+    rc.tmax = 1e300;
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      rtcInitIntersectContext(&rc.ctx);
+      const Ray& q = rays[i];
+      RTCRayHit rh;
+      rh.ray.org_x = static_cast<float>(q.org[0] - g.centre[0]);
+      rh.ray.org_y = static_cast<float>(q.org[1] - g.centre[1]);
+      rh.ray.org_z = static_cast<float>(q.org[2] - g.centre[2]);
+      rh.ray.dir_x = static_cast<float>(q.dir[0]);
+      rh.ray.dir_y = static_cast<float>(q.dir[1]);
+      rh.ray.dir_z = static_cast<float>(q.dir[2]);
+      rh.ray.tnear = static_cast<float>(q.tmin);
+      rh.ray.tfar = std::numeric_limits<float>::infinity();
+      rh.ray.time = 0;
+      rh.ray.mask = ~0u;
+      rh.ray.id = 0;
+      rh.ray.flags = 0;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(g.top, &rc.ctx, &rh);
+      t[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
+                                                      : rh.ray.tfar;
+    }
+  });
+}
+
 } // namespace radcl::geometry

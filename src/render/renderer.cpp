@@ -856,7 +856,7 @@ struct Renderer::Impl {
   std::size_t generation_rays() const {
     if (const char* e = std::getenv("RADCL_GENERATION_RAYS"); e && *e)
       return std::max<std::size_t>(1, std::strtoull(e, nullptr, 10));
-    return ctx.zero_copy() ? std::size_t{1} << 20 : std::size_t{1} << 22;
+    return ctx.zero_copy() ? std::size_t{1} << 19 : std::size_t{1} << 22;
   }
   void run(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
     const std::size_t wave = std::max<std::size_t>(1, settings.wave_size);
@@ -1437,30 +1437,36 @@ struct Renderer::Impl {
     }
   }
 
-  // Embree's rays and answers for a chunk, kept from chunk to chunk.
-  std::vector<geometry::Ray> trace_rays;
+  // Embree's answers for a chunk (where they are read), kept from chunk to chunk.
   std::vector<std::optional<geometry::Hit>> trace_answers;
   void trace(std::span<const rc_ray> queue, std::vector<rc_hit>& hits, std::span<PrimaryResult> res,
              bool primaries) {
     Timed timed(prof, Phase::Trace);
     std::size_t n = queue.size();
-    std::vector<geometry::Ray>& rays = trace_rays;
-    rays.resize(n);
-    for_rows(n, [&](std::size_t i) {
-      const rc_ray& r = queue[i];
-      rays[i].org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
-      rays[i].dir = {r.dir.x, r.dir.y, r.dir.z};
-      rays[i].tmin = r.org.w;
-      // The kernels send a positive tmin only from an -I meter's point (rc_leave_org).
-      rays[i].free_origin = r.org.w > 0 && !primaries;
-      rays[i].tmax = std::isfinite(r.dir.w) ? r.dir.w : 1e300;
-    });
+    // One pass per ray: the query, then its device record. Embree's double answer is kept
+    // only where the loops below read it (the primaries, mirror reflections, straight
+    // transmissions); the rest would be memory written and never read.
     std::vector<std::optional<geometry::Hit>>& gh = trace_answers;
     gh.resize(n);
-    geom.intersect(rays, gh);
-    (primaries ? stats.primary : stats.secondary) += n;
     hits.resize(n);
-    for_rows(n, [&](std::size_t i) { hits[i] = to_device(rays[i], gh[i]); });
+    constexpr std::uint32_t kKept = RC_RAY_MIRRORED | RC_RAY_THROUGH;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const rc_ray& r = queue[i];
+        geometry::Ray ray;
+        ray.org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
+        ray.dir = {r.dir.x, r.dir.y, r.dir.z};
+        ray.tmin = r.org.w;
+        // The kernels send a positive tmin only from an -I meter's point (rc_leave_org).
+        ray.free_origin = r.org.w > 0 && !primaries;
+        ray.tmax = std::isfinite(r.dir.w) ? r.dir.w : 1e300;
+        std::optional<geometry::Hit> h =
+            geom.intersect(ray.org, ray.dir, ray.tmin, ray.tmax, ray.free_origin);
+        hits[i] = to_device(ray, h);
+        if (primaries || (r.flags & kKept)) gh[i] = std::move(h);
+      }
+    });
+    (primaries ? stats.primary : stats.secondary) += n;
     // The first hit's mirror reflection: how far it went, for rtrace's R and l. Measured from
     // the surface point it left (its ray starts just beside it: rc_leave).
     auto dist = [](const Vec3d& a, const Vec3d& b) {
@@ -1517,6 +1523,7 @@ struct Renderer::Impl {
 
   // Rays [shadows, shadows + n): contributions written back in place, blocked[i] cleared for
   // each one that reached its source.
+  std::vector<rc_hit> shadow_hits; // a step's answers, kept from step to step
   void trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::uint8_t* blocked) {
     std::vector<std::uint32_t> slot;
     std::vector<rc_shadow> cur;
@@ -1532,23 +1539,26 @@ struct Renderer::Impl {
     constexpr int kMaxSteps = 64;
     for (int step = 0; step < kMaxSteps && !cur.empty(); ++step) {
       std::size_t m = cur.size();
-      std::vector<geometry::Ray> rays(m);
-      for_rows(m, [&](std::size_t i) {
-        const rc_shadow& s = cur[i];
-        const rc_source& src = cs.sources.sources[s.source];
-        rays[i].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
-        rays[i].dir = {s.dir.x, s.dir.y, s.dir.z};
-        rays[i].tmin = s.org.w;
-        rays[i].free_origin = s.org.w > 0; // from an -I meter's point (rc_leave_org)
-        rays[i].tmax =
-            src.kind == RC_SRC_DISTANT || !std::isfinite(s.dir.w) ? 1e300 : s.dir.w * 1.001 + 1e-3;
-      });
       Timed timed(prof, Phase::ShadowTrace);
-      std::vector<std::optional<geometry::Hit>> gh(m);
-      geom.intersect(rays, gh);
+      // One pass per ray: the query and its device record.
+      std::vector<rc_hit>& hits = shadow_hits;
+      hits.resize(m);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const auto& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          const rc_shadow& s = cur[i];
+          const rc_source& src = cs.sources.sources[s.source];
+          geometry::Ray ray;
+          ray.org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
+          ray.dir = {s.dir.x, s.dir.y, s.dir.z};
+          ray.tmin = s.org.w;
+          ray.free_origin = s.org.w > 0; // from an -I meter's point (rc_leave_org)
+          ray.tmax = src.kind == RC_SRC_DISTANT || !std::isfinite(s.dir.w) ? 1e300
+                                                                           : s.dir.w * 1.001 + 1e-3;
+          hits[i] =
+              to_device(ray, geom.intersect(ray.org, ray.dir, ray.tmin, ray.tmax, ray.free_origin));
+        }
+      });
       stats.shadow += m;
-      std::vector<rc_hit> hits(m);
-      for_rows(m, [&](std::size_t i) { hits[i] = to_device(rays[i], gh[i]); });
       timed.start(Phase::ShadowStep);
 
       device::Buffer& bcur = scratch(kStepRays, cur);

@@ -111,6 +111,10 @@ public:
   // Waves of rays, in parallel over the host cores. Output spans must match the input size.
   void intersect(std::span<const Ray> rays, std::span<std::optional<Hit>> hits) const;
   void occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
+  // The machine's limit for the same rays, for tests/bench/embree_rays: Embree's float
+  // traversal alone (every candidate accepted, nothing tested or rebuilt in double), each
+  // ray's float distance (infinity: a miss) written to `t`. Not an answer to shade with.
+  void intersect_raw(std::span<const Ray> rays, std::span<float> t) const;
 
   // World bounding box of everything in Embree (double); its centre is the re-centring origin.
   std::array<Vec3d, 2> bounds() const;
