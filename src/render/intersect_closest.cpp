@@ -1,0 +1,100 @@
+// Stage: the nearest hit of every ray of a chunk (Embree on the host), as the kernels' records.
+#include <cmath>
+
+#include "pipeline_util.h"
+#include "radcl/render/virtual_sources.h"
+#include "renderer_impl.h"
+
+namespace radcl::render {
+
+using namespace ambient;
+using namespace pipeline;
+
+rc_hit Renderer::Impl::to_device(const geometry::Ray& ray,
+                                 const std::optional<geometry::Hit>& h) const {
+  rc_hit out{};
+  out.surface = RC_NONE;
+  out.source = RC_NONE;
+  if (h) {
+    out.pos = f4(h->point[0] - centre[0], h->point[1] - centre[1], h->point[2] - centre[2], h->t);
+    out.nrm = f4(h->normal[0], h->normal[1], h->normal[2], 0);
+    out.uv = f4(h->u, h->v, 0, 0);
+    out.surface = cs.surface_of(*h);
+    out.prim = h->prim;
+    out.front = h->front ? 1 : 0;
+  } else {
+    out.pos = f4(0, 0, 0, -1);
+    out.front = 1;
+    out.surface = distant_surface(cs, geom, ray.dir);
+  }
+  if (out.surface < cs.surfaces.size()) out.source = cs.surfaces[out.surface].source;
+  return out;
+}
+
+void Renderer::Impl::trace(std::span<const rc_ray> queue, std::vector<rc_hit>& hits,
+                           std::span<PrimaryResult> res, bool primaries) {
+  Timed timed(prof, Phase::Trace);
+  std::size_t n = queue.size();
+  // One pass per ray: the query, then its device record. Embree's double answer is kept
+  // only where the loops below read it (the primaries, mirror reflections, straight
+  // transmissions); the rest would be memory written and never read.
+  std::vector<std::optional<geometry::Hit>>& gh = trace_answers;
+  gh.resize(n);
+  hits.resize(n);
+  constexpr std::uint32_t kKept = RC_RAY_MIRRORED | RC_RAY_THROUGH;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const rc_ray& r = queue[i];
+      geometry::Ray ray;
+      ray.org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
+      ray.dir = {r.dir.x, r.dir.y, r.dir.z};
+      ray.tmin = r.org.w;
+      // The kernels send a positive tmin only from an -I meter's point (rc_leave_org).
+      ray.free_origin = r.org.w > 0 && !primaries;
+      ray.tmax = std::isfinite(r.dir.w) ? r.dir.w : 1e300;
+      std::optional<geometry::Hit> h =
+          geom.intersect(ray.org, ray.dir, ray.tmin, ray.tmax, ray.free_origin);
+      hits[i] = to_device(ray, h);
+      if (primaries || (r.flags & kKept)) gh[i] = std::move(h);
+    }
+  });
+  (primaries ? stats.primary : stats.secondary) += n;
+  // The first hit's mirror reflection: how far it went, for rtrace's R and l. Measured from
+  // the surface point it left (its ray starts just beside it: rc_leave).
+  auto dist = [](const Vec3d& a, const Vec3d& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                     (a[2] - b[2]) * (a[2] - b[2]));
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    if ((queue[i].flags & RC_RAY_MIRRORED) &&
+        (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED &&
+        queue[i].depth == root_depth[slot(queue[i].primary)] + 1) {
+      PrimaryResult& pr = results[slot(queue[i].primary)];
+      pr.mirror_t = (queue[i].flags & RC_RAY_TILTED) ? 0.0
+                    : gh[i]                          ? dist(gh[i]->point, pr.point)
+                                                     : 1e10;
+    }
+  // The straight continuation through transmitting surfaces: its lengths add up (X), each
+  // from the surface point the last one met.
+  for (std::size_t i = 0; i < n; ++i)
+    if ((queue[i].flags & RC_RAY_THROUGH) &&
+        (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_TRANSMITTED) {
+      PrimaryResult& pr = results[slot(queue[i].primary)];
+      const Vec3d& from = pr.through_t < 0 ? pr.point : pr.through_at;
+      pr.through_t = std::max(pr.through_t, 0.0) + (gh[i] ? dist(gh[i]->point, from) : 1e10);
+      if (gh[i]) pr.through_at = gh[i]->point;
+    }
+  if (!primaries) return;
+  for (std::size_t i = 0; i < n; ++i) {
+    PrimaryResult& r = res[slot(queue[i].primary)];
+    r.surface = hits[i].surface; // also a distant source met by a miss
+    if (!gh[i]) continue;
+    r.hit = true;
+    r.t = gh[i]->t;
+    r.point = gh[i]->point;
+    r.normal = gh[i]->normal;
+    r.surface = hits[i].surface;
+  }
+}
+
+} // namespace radcl::render

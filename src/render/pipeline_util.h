@@ -1,0 +1,86 @@
+// Small helpers the wave pipeline's files share.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "radcl/device/buffer.h"
+#include "radcl/device/context.h"
+#include "radcl/device_types.h"
+#include "radcl/render/renderer.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace radcl::render::pipeline {
+
+// Radiance's bright() as the host's ambient code weighs samples.
+inline double bright(const Vec3d& c) {
+  return 0.2651 * c[0] + 0.6701 * c[1] + 0.0648 * c[2];
+}
+
+inline rc_float4 f4(double x, double y, double z, double w) {
+  return rc_float4{static_cast<float>(x), static_cast<float>(y), static_cast<float>(z),
+                   static_cast<float>(w)};
+}
+
+inline Vec3d unit(const Vec3d& v) {
+  double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return l > 0 ? Vec3d{v[0] / l, v[1] / l, v[2] / l} : Vec3d{0, 0, 0};
+}
+
+// Exclusive prefix sum; returns the total.
+inline std::uint32_t prefix_sum(std::vector<std::uint32_t>& v) {
+  std::uint32_t sum = 0;
+  for (std::uint32_t& x : v) {
+    std::uint32_t c = x;
+    x = sum;
+    sum += c;
+  }
+  return sum;
+}
+
+template <class T> device::Buffer upload(device::Context& ctx, const std::vector<T>& v) {
+  return v.empty() ? device::Buffer(ctx, sizeof(T)) : device::Buffer::from(ctx, v);
+}
+
+// Shirley and Chiu's concentric map of the unit square onto the unit disc (as the kernels'
+// rc_square_to_disk), for the hemispheres of new records.
+inline std::array<double, 2> square_to_disk(double sx, double sy) {
+  const double a = 2 * sx - 1, b = 2 * sy - 1;
+  if (a == 0 && b == 0) return {0, 0};
+  const double q = 3.14159265358979323846 / 4;
+  double r, phi;
+  if (a * a > b * b) {
+    r = a;
+    phi = q * (b / a);
+  } else {
+    r = b;
+    phi = 2 * q - q * (a / b);
+  }
+  return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+// Runs f(i) for every i in [0, n): in parallel where there are enough to pay for it (the
+// per-ray host loops of a wave of millions of hemisphere samples).
+template <class F> void for_rows(std::size_t n, const F& f) {
+  constexpr std::size_t kGrain = 4096;
+  if (n < 2 * kGrain) {
+    for (std::size_t i = 0; i < n; ++i)
+      f(i);
+    return;
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
+      f(i);
+  });
+}
+
+// Whether lookups in an irradiance cache run: records to look up, -aa > 0 and a bounce.
+inline bool uses_cache(const RenderSettings& st) {
+  return st.ab > 0 && st.aa > 0 && (st.make_records || !st.ambient_records.empty());
+}
+
+} // namespace radcl::render::pipeline

@@ -1,0 +1,81 @@
+// Scratch memory the wave pipeline reuses from wave to wave: device buffers by slot and host
+// vectors lent to a batch. Allocating them afresh every wave spends more time clearing pages
+// than shading.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "radcl/device/buffer.h"
+#include "radcl/device/context.h"
+
+namespace radcl::render {
+
+// The pipeline's device buffers, one per use.
+enum ScratchSlot {
+  kRays,
+  kHits,
+  kNShadow,
+  kNSpawn,
+  kShadowOff,
+  kSpawnOff,
+  kShadows,
+  kSpawned,
+  kImm,
+  kBlocked,
+  kTotal,
+  kStepRays,
+  kStepHits,
+  kStepState,
+  kSuperOff,
+  kSuperData,
+  kShadowSlots,
+  kSpawnSlots,
+  kScratchSlots
+};
+
+// Device buffers by slot, grown by half again when a wave needs more and otherwise kept.
+class ScratchPool {
+public:
+  explicit ScratchPool(device::Context& ctx) : ctx_(ctx), pool_(kScratchSlots) {}
+  // The slot's buffer, at least `bytes` long.
+  device::Buffer& operator()(ScratchSlot slot, std::size_t bytes) {
+    bytes = std::max<std::size_t>(bytes, 16);
+    if (pool_[slot].size() < bytes) pool_[slot] = device::Buffer(ctx_, bytes + bytes / 2);
+    return pool_[slot];
+  }
+  // The slot's buffer holding a copy of `v`.
+  template <class T> device::Buffer& operator()(ScratchSlot slot, const std::vector<T>& v) {
+    device::Buffer& b = (*this)(slot, v.size() * sizeof(T));
+    if (!v.empty()) b.write(v.data(), v.size() * sizeof(T));
+    return b;
+  }
+
+private:
+  device::Context& ctx_;
+  std::vector<device::Buffer> pool_;
+};
+
+// A vector lent from `pool` for a scope and given back, emptied but with its room, when the
+// scope ends (a batch inside another, as a record's hemisphere inside a cache pass, takes
+// others).
+template <class T> struct Spare {
+  std::vector<std::vector<T>>& pool;
+  std::vector<T> v;
+  explicit Spare(std::vector<std::vector<T>>& p) : pool(p) {
+    if (!pool.empty()) {
+      v = std::move(pool.back());
+      pool.pop_back();
+    }
+  }
+  ~Spare() {
+    v.clear();
+    pool.push_back(std::move(v));
+  }
+  Spare(const Spare&) = delete;
+  Spare& operator=(const Spare&) = delete;
+};
+
+} // namespace radcl::render

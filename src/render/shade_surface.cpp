@@ -1,0 +1,252 @@
+// Stage: rc_shade over a chunk of hits, its shadow requests and children packed in ray order,
+// the shadow rays' answers summed by rc_accumulate into each primary.
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+
+#include "pipeline_util.h"
+#include "renderer_impl.h"
+
+namespace radcl::render {
+
+using namespace ambient;
+using namespace pipeline;
+
+void Renderer::Impl::set_scene_args(device::Kernel& k, unsigned first) {
+  k.arg(first, surfaces)
+      .arg(first + 1, materials)
+      .arg(first + 2, args)
+      .arg(first + 3, sources)
+      .arg(first + 4, verts)
+      .arg(first + 5, mirrors)
+      .arg(first + 6, params)
+      .arg(first + 7, patterns)
+      .arg(first + 8, amb_records.buffer())
+      .arg(first + 9, amb_nodes.buffer())
+      .arg(first + 10, amb_blocked.buffer());
+}
+
+void Renderer::Impl::run_shade(const ShadeLaunch& l, std::size_t n) {
+  shade.arg(0, *l.rays).arg(1, *l.hits).arg(2, static_cast<std::uint32_t>(n));
+  set_scene_args(shade, 3);
+  shade.arg(kSceneArgs + 3, *l.shadow_off)
+      .arg(kSceneArgs + 4, *l.spawn_off)
+      .arg(kSceneArgs + 5, *l.shadows)
+      .arg(kSceneArgs + 6, *l.spawned)
+      .arg(kSceneArgs + 7, *l.immediate)
+      .arg(kSceneArgs + 8, l.super)
+      .arg(kSceneArgs + 9, l.super_off ? *l.super_off : *l.shadow_off)
+      .arg(kSceneArgs + 10, l.super_data ? *l.super_data : *l.shadow_off)
+      .arg(kSceneArgs + 11, l.cap_shadow)
+      .arg(kSceneArgs + 12, l.cap_spawn)
+      .arg(kSceneArgs + 13, l.nshadow ? *l.nshadow : *l.shadow_off)
+      .arg(kSceneArgs + 14, l.nspawn ? *l.nspawn : *l.spawn_off);
+  ctx.run(shade, n);
+}
+
+void Renderer::Impl::run_count(device::Buffer& rays, device::Buffer& hits, device::Buffer& nshadow,
+                               device::Buffer& nspawn, std::size_t n, device::Buffer* super_off,
+                               device::Buffer* super_data) {
+  ShadeLaunch l{&rays, &hits, &nshadow, &nspawn, &nshadow, &nshadow, &nshadow};
+  l.super = super_off ? 1 : 0;
+  l.super_off = super_off;
+  l.super_data = super_data;
+  l.cap_shadow = l.cap_spawn = 0;
+  l.nshadow = &nshadow;
+  l.nspawn = &nspawn;
+  run_shade(l, n);
+}
+
+void Renderer::Impl::size_slots(std::span<const rc_ray> queue, const std::vector<rc_hit>& hits) {
+  if (queue.size() <= kUncountedWave) return;
+  Timed timed(prof, Phase::Slots);
+  std::size_t n = queue.size(), stride = std::max<std::size_t>(1, n / 512);
+  std::vector<rc_ray> r;
+  std::vector<rc_hit> h;
+  for (std::size_t i = stride / 2; i < n; i += stride) {
+    r.push_back(queue[i]);
+    h.push_back(hits[i]);
+  }
+  std::size_t m = r.size();
+  device::Buffer& brays = scratch(kStepRays, r);
+  device::Buffer& bhits = scratch(kStepHits, h);
+  device::Buffer& bnshadow = scratch(kNShadow, m * 4);
+  device::Buffer& bnspawn = scratch(kNSpawn, m * 4);
+  run_count(brays, bhits, bnshadow, bnspawn, m);
+  auto quantile = [m](std::vector<std::uint32_t> v) {
+    std::size_t k = m * 98 / 100;
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
+    return std::max<std::uint32_t>(1, v[k]);
+  };
+  std::vector<std::uint32_t> csh(m), csp(m);
+  bnshadow.read_later(csh.data(), m * 4);
+  bnspawn.read_later(csp.data(), m * 4);
+  ctx.finish();
+  cap_shadow = quantile(std::move(csh));
+  cap_spawn = quantile(std::move(csp));
+}
+
+void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
+                             const std::vector<std::uint32_t>& over,
+                             const std::vector<std::uint32_t>& nsh,
+                             const std::vector<std::uint32_t>& nsp,
+                             const std::vector<std::uint32_t>& shadow_off,
+                             const std::vector<std::uint32_t>& spawn_off,
+                             std::vector<rc_shadow>& shadows, std::vector<rc_ray>& children) {
+  std::size_t m = over.size();
+  std::vector<rc_ray> r(m);
+  std::vector<rc_hit> h(m);
+  std::vector<std::uint32_t> soff(m), poff(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    r[k] = rays[over[k]];
+    h[k] = hit[over[k]];
+    soff[k] = nsh[over[k]];
+    poff[k] = nsp[over[k]];
+  }
+  std::uint32_t tsh = prefix_sum(soff), tsp = prefix_sum(poff);
+  device::Buffer& brays = scratch(kStepRays, r);
+  device::Buffer& bhits = scratch(kStepHits, h);
+  device::Buffer& bsoff = scratch(kSuperOff, soff);
+  device::Buffer& bpoff = scratch(kSuperData, poff);
+  device::Buffer& bsh = scratch(kShadows, std::size_t{tsh} * sizeof(rc_shadow));
+  device::Buffer& bsp = scratch(kSpawned, std::size_t{tsp} * sizeof(rc_ray));
+  device::Buffer& bimm = scratch(kTotal, m * sizeof(rc_float4));
+  run_shade(ShadeLaunch{&brays, &bhits, &bsoff, &bpoff, &bsh, &bsp, &bimm}, m);
+  std::vector<rc_shadow> sh(tsh);
+  std::vector<rc_ray> sp(tsp);
+  bsh.read_later(sh.data(), sh.size() * sizeof(rc_shadow));
+  bsp.read_later(sp.data(), sp.size() * sizeof(rc_ray));
+  ctx.finish();
+  for (std::size_t k = 0; k < m; ++k) {
+    if (!shadows.empty()) // empty: a thrown-away pass
+      std::copy_n(sh.data() + soff[k], nsh[over[k]], shadows.data() + shadow_off[over[k]]);
+    std::copy_n(sp.data() + poff[k], nsp[over[k]], children.data() + spawn_off[over[k]]);
+  }
+}
+
+void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n,
+                                 std::vector<Vec3d>& sums, std::vector<rc_ray>& next) {
+  Timed timed(prof, Phase::Shade);
+  std::uint32_t un = static_cast<std::uint32_t>(n);
+  device::Buffer& brays = scratch(kRays, n * sizeof(rc_ray));
+  brays.write(rays, n * sizeof(rc_ray));
+  device::Buffer& bhits = scratch(kHits, n * sizeof(rc_hit));
+  bhits.write(hit, n * sizeof(rc_hit));
+  const std::uint32_t csh = cap_shadow, csp = cap_spawn;
+  device::Buffer& bslot_sh = scratch(kShadowSlots, n * csh * sizeof(rc_shadow));
+  device::Buffer& bslot_sp = scratch(kSpawnSlots, n * csp * sizeof(rc_ray));
+  device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
+  device::Buffer& bnshadow = scratch(kNShadow, n * 4);
+  device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
+  ShadeLaunch l{&brays, &bhits, &bnshadow, &bnspawn, &bslot_sh, &bslot_sp, &bimm};
+  l.cap_shadow = csh;
+  l.cap_spawn = csp;
+  const auto w0 = std::chrono::steady_clock::now();
+  run_shade(l, n);
+  std::chrono::steady_clock::time_point w1;
+  if (prof.waves()) {
+    ctx.finish();
+    w1 = std::chrono::steady_clock::now();
+  }
+  // The counts and this slice's slots (not the pool buffers whole, both ways), read in one
+  // wait: a small wave's time is mostly the latency of its transfers.
+  std::vector<std::uint32_t> shadow_off(n), spawn_off(n);
+  bnshadow.read_later(shadow_off.data(), n * 4);
+  bnspawn.read_later(spawn_off.data(), n * 4);
+  const auto* ssh = throwaway ? nullptr
+                              : static_cast<const rc_shadow*>(
+                                    bslot_sh.peek_later(n * csh * sizeof(rc_shadow), peek_sh));
+  const auto* ssp =
+      static_cast<const rc_ray*>(bslot_sp.peek_later(n * csp * sizeof(rc_ray), peek_sp));
+  ctx.finish();
+  if (prof.waves()) {
+    const auto w2 = std::chrono::steady_clock::now();
+    prof.add_wave(n, std::chrono::duration<double>(w1 - w0).count(),
+                  std::chrono::duration<double>(w2 - w1).count());
+  }
+  std::vector<std::uint32_t> over;
+  for (std::size_t i = 0; i < n; ++i)
+    if (shadow_off[i] & 0x80000000u) {
+      shadow_off[i] &= 0x7FFFFFFFu;
+      over.push_back(static_cast<std::uint32_t>(i));
+    }
+  std::vector<std::uint32_t> nsh = shadow_off, nsp = spawn_off;
+  std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
+  // A thrown-away pass wants only the children (they may miss too).
+  std::vector<rc_shadow> shadows(throwaway ? 0 : nshadow);
+  std::vector<rc_ray> children(nspawn);
+  {
+    std::vector<char> later(n, 0); // shaded again below
+    for (std::uint32_t i : over)
+      later[i] = 1;
+    for_rows(n, [&](std::size_t i) {
+      if (later[i]) return;
+      if (ssh) std::copy_n(ssh + i * csh, nsh[i], shadows.data() + shadow_off[i]);
+      std::copy_n(ssp + i * csp, nsp[i], children.data() + spawn_off[i]);
+    });
+  }
+  if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
+  if (throwaway) {
+    append_children(children, next);
+    return;
+  }
+  device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
+
+  std::vector<rc_shadow> requested;
+  if (settings.trace == RenderSettings::Trace::RaysAndShadows) requested = shadows;
+  timed.stop();
+  std::vector<std::uint8_t> blocked = trace_shadows(shadows);
+  timed.start(Phase::Accumulate);
+  // rc_accumulate's view of a request: its contribution, w < 0 for a traced ray, else the
+  // -dt estimate's count of tested requests before it.
+  std::vector<rc_float4> contrib(nshadow);
+  for_rows(nshadow, [&](std::size_t k) {
+    const rc_shadow& q = shadows[k];
+    contrib[k] = q.contrib;
+    contrib[k].w = q.source != RC_NONE ? -1.0f : static_cast<float>(q.pad0);
+  });
+  device::Buffer& bcontrib = scratch(kShadows, contrib);
+  device::Buffer& bblocked = scratch(kBlocked, blocked);
+  device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
+  accumulate.arg(0, bimm)
+      .arg(1, bsoff)
+      .arg(2, bcontrib)
+      .arg(3, bblocked)
+      .arg(4, un)
+      .arg(5, nshadow)
+      .arg(6, btotal);
+  ctx.run(accumulate, n);
+  std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
+  if (tree) {
+    std::vector<TallyTree::TracedShadow> ts;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::size_t end = i + 1 < n ? spawn_off[i + 1] : nspawn;
+      ts.clear();
+      if (!requested.empty()) {
+        std::size_t send = i + 1 < n ? shadow_off[i + 1] : nshadow;
+        for (std::size_t k = shadow_off[i]; k < send; ++k)
+          if (requested[k].source != RC_NONE) // not a -dt estimate
+            ts.push_back({requested[k], shadows[k].contrib, blocked[k] != 0});
+      }
+      tally.shaded(rays[i], hit[i], total[i], children.data() + spawn_off[i], end - spawn_off[i],
+                   ts.data(), ts.size());
+    }
+    append_children(children, next);
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3d& s = sums[rays[i].tally];
+    s[0] += total[i].x;
+    s[1] += total[i].y;
+    s[2] += total[i].z;
+    if (rays[i].flags & RC_RAY_MIRRORED) {
+      Vec3d& m = (*mirrored)[slot(rays[i].primary)];
+      m[0] += total[i].x;
+      m[1] += total[i].y;
+      m[2] += total[i].z;
+    }
+  }
+  append_children(children, next);
+}
+
+} // namespace radcl::render

@@ -1,0 +1,225 @@
+// The driver loop: batches of primaries, each generation of their rays through the stages in
+// chunks, until no ray is left.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "pipeline_util.h"
+#include "radcl/render/irradiance_meter.h"
+#include "renderer_impl.h"
+
+namespace radcl::render {
+
+using namespace ambient;
+using namespace pipeline;
+
+std::size_t Renderer::Impl::chunk_rays() const {
+  if (const char* e = std::getenv("RADCL_CHUNK_RAYS"); e && *e)
+    return std::max<std::size_t>(1, std::strtoull(e, nullptr, 10));
+  return ctx.zero_copy() ? std::size_t{1} << 16 : std::size_t{1} << 18;
+}
+
+std::size_t Renderer::Impl::generation_rays() const {
+  if (const char* e = std::getenv("RADCL_GENERATION_RAYS"); e && *e)
+    return std::max<std::size_t>(1, std::strtoull(e, nullptr, 10));
+  return ctx.zero_copy() ? std::size_t{1} << 19 : std::size_t{1} << 22;
+}
+
+void Renderer::Impl::run(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
+  const std::size_t wave = std::max<std::size_t>(1, settings.wave_size);
+  const std::size_t cap = generation_rays();
+  for (std::size_t first = 0; first < rays.size();) {
+    std::size_t n = std::min(wave, rays.size() - first);
+    if (!uses_cache(settings)) {
+      // Before any batch is measured, a guess: -ad rays at the first bounce, and about 16
+      // times as many at the second (-ab 2 -ad 1024 gives 9,000).
+      const double ad = std::max(1, settings.ad);
+      const double per = rays_per_primary > 0 ? rays_per_primary
+                         : settings.ab > 1    ? 16 * ad
+                         : settings.ab > 0    ? ad
+                                              : 1.0;
+      n = std::min(n, std::max<std::size_t>(1, static_cast<std::size_t>(cap / per)));
+    }
+    peak_generation = 0;
+    render_batch(rays.subspan(first, n), results.subspan(first, n), first);
+    rays_per_primary = std::max(rays_per_primary, static_cast<double>(peak_generation) / n);
+    first += n;
+  }
+}
+
+void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
+                                  std::size_t first_index) {
+  Timed timed(prof, Phase::Batch);
+  batch_first = first_index;
+  id_slot.clear();
+  if (std::any_of(prim.begin(), prim.end(), [](const PrimaryRay& r) { return r.id != RC_NONE; })) {
+    std::vector<std::uint32_t> ids(prim.size());
+    for (std::size_t k = 0; k < prim.size(); ++k)
+      ids[k] = prim[k].id != RC_NONE ? prim[k].id : static_cast<std::uint32_t>(first_index + k);
+    id_slot.assign(ids);
+  }
+  // The generation queues come from a pool that outlives the batch: growing fresh ones to
+  // millions of rays in every batch paged in (and cleared) new memory each time.
+  Spare<rc_ray> queue_hold(spare_rays), next_hold(spare_rays);
+  Spare<rc_hit> hits_hold(spare_hits);
+  std::vector<rc_ray>& queue = queue_hold.v;
+  std::vector<rc_hit>& hits = hits_hold.v;
+  queue.resize(prim.size());
+  leak_lists.assign(1, 0u);
+  leak_uploaded = 0;
+  std::vector<Vec3d> sums(prim.size(), Vec3d{0, 0, 0});
+  std::vector<Vec3d> mirror_sums(prim.size(), Vec3d{0, 0, 0});
+  mirrored = &mirror_sums;
+  results = res;
+  root_depth.assign(prim.size(), 0);
+  if (tree) tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
+  for_rows(prim.size(), [&](std::size_t i) {
+    Vec3d d = unit(prim[i].dir);
+    Vec3d o = prim[i].org;
+    res[i] = PrimaryResult{};
+    res[i].point = o;
+    rc_ray& r = queue[i];
+    r.org = f4(o[0] - centre[0], o[1] - centre[1], o[2] - centre[2], 0);
+    r.dir = f4(d[0], d[1], d[2], prim[i].tmax > 0 ? prim[i].tmax : INFINITY);
+    r.coef = f4(1, 1, 1, 1);
+    r.primary = prim[i].id != RC_NONE ? prim[i].id : static_cast<std::uint32_t>(first_index + i);
+    r.flags = RC_RAY_PRIMARY;
+    r.tally = static_cast<std::uint32_t>(i);
+    r.dist0 = 0;           // patterns' T counts from the primary's start
+    if (!starts.empty()) { // a hemisphere sample of a record being made
+      const RayStart& st = starts[first_index + i];
+      r.flags = st.flags;
+      r.depth = st.depth;
+      r.ambient_depth = st.ambient_depth;
+      r.coef.w = st.weight;
+      r.dist0 = st.dist0;
+      r.org.w = RC_TMIN_OFF; // its origin is already beside the surface
+    }
+    root_depth[i] = r.depth;
+  });
+  if (settings.irradiance_I && nesting == 0) {
+    // The measurement point is a diffuse meter facing the given direction, meter_offset()
+    // along it (where Radiance's reversed primary ray meets it).
+    hits.resize(prim.size());
+    for (std::size_t i = 0; i < prim.size(); ++i) {
+      Vec3d d = unit(prim[i].dir);
+      const Vec3d p = meter_point(geom, prim[i].org, d);
+      rc_hit& h = hits[i];
+      h = rc_hit{};
+      h.pos = f4(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2], 1e-5);
+      h.nrm = f4(d[0], d[1], d[2], 0);
+      h.surface = RC_SURF_IRRADIANCE;
+      h.source = RC_NONE;
+      h.front = 1;
+      queue[i].dir = f4(-d[0], -d[1], -d[2], INFINITY);
+    }
+  }
+
+  timed.stop();
+  // Each generation of rays goes through in chunks: trace, leak tests and shading of one
+  // chunk before the next, so the per-ray scratch (Embree's answers, slots, shadow requests)
+  // is bounded by the chunk and reused, not freshly mapped and cleared for a generation of
+  // millions. Chunks keep queue order, so sums and records do not depend on their size.
+  const std::vector<rc_hit> meters =
+      (settings.irradiance_I && nesting == 0) ? std::move(hits) : std::vector<rc_hit>{};
+  bool first_wave = true;
+  std::vector<rc_ray>& next = next_hold.v;
+  const std::size_t chunk = chunk_rays();
+  while (!queue.empty()) {
+    const std::size_t n = queue.size();
+    peak_generation = std::max(peak_generation, n);
+    for (std::size_t a = 0; a < n; a += chunk) {
+      const std::size_t b = std::min(n, a + chunk);
+      const std::span<const rc_ray> part(queue.data() + a, b - a);
+      if (first_wave && !meters.empty())
+        hits.assign(meters.begin() + static_cast<std::ptrdiff_t>(a),
+                    meters.begin() + static_cast<std::ptrdiff_t>(b));
+      else
+        trace(part, hits, res, first_wave);
+      test_leaks(part, hits);
+      // Shade in slices whose slots fit a modest allocation (a slice keeps queue order, so
+      // sums stay in order).
+      std::size_t limit = std::size_t{1} << 26;
+      if (const char* e = std::getenv("RADCL_WAVE_BYTES")) limit = std::strtoull(e, nullptr, 10);
+      size_slots(part, hits);
+      for (std::size_t sa = 0; sa < part.size();) {
+        std::size_t per_ray = cap_shadow * sizeof(rc_shadow) + cap_spawn * sizeof(rc_ray);
+        std::size_t sb = std::min(part.size(), sa + std::max<std::size_t>(256, limit / per_ray));
+        shade_slice(part.data() + sa, hits.data() + sa, sb - sa, sums, next);
+        sa = sb;
+      }
+    }
+    first_wave = false;
+    if (tree)
+      for (auto req = tally.take_requests(); !req.empty(); req = tally.take_requests())
+        supersample(req, next);
+    std::swap(queue, next);
+    next.clear();
+  }
+  timed.start(Phase::Batch);
+  const auto finish = [&](std::size_t i) {
+    res[i].value = tree ? tally.sum(i) : sums[i];
+    res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
+  };
+  if (settings.trace != RenderSettings::Trace::Off) {
+    for (std::size_t i = 0; i < prim.size(); ++i) {
+      finish(i);
+      res[i].traced = traced(i);
+    }
+  } else {
+    for_rows(prim.size(), finish);
+  }
+}
+
+void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req,
+                                 std::vector<rc_ray>& next) {
+  Timed timed(prof, Phase::Super);
+  std::size_t n = req.size();
+  std::vector<rc_ray> rays(n);
+  std::vector<rc_hit> hit(n);
+  std::vector<std::uint32_t> off(n), data;
+  for (std::size_t i = 0; i < n; ++i) {
+    rays[i] = req[i].ray;
+    hit[i] = req[i].hit;
+    off[i] = static_cast<std::uint32_t>(data.size());
+    data.push_back(req[i].which);
+    data.insert(data.end(), req[i].counts.begin(), req[i].counts.end());
+  }
+  device::Buffer& brays = scratch(kRays, rays);
+  device::Buffer& bhits = scratch(kHits, hit);
+  device::Buffer& boff = scratch(kSuperOff, off);
+  device::Buffer& bdata = scratch(kSuperData, data);
+  device::Buffer& bnshadow = scratch(kNShadow, n * 4);
+  device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
+  run_count(brays, bhits, bnshadow, bnspawn, n, &boff, &bdata);
+  std::vector<std::uint32_t> spawn_off = bnspawn.to_vector<std::uint32_t>(n);
+  std::vector<std::uint32_t> counts = spawn_off;
+  std::uint32_t nspawn = prefix_sum(spawn_off);
+  std::vector<std::uint32_t> zeros(n, 0);
+  device::Buffer& bsoff = scratch(kShadowOff, zeros);
+  device::Buffer& bpoff = scratch(kSpawnOff, spawn_off);
+  device::Buffer& bshadows = scratch(kShadows, sizeof(rc_shadow));
+  device::Buffer& bspawned = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
+  device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
+  ShadeLaunch l{&brays, &bhits, &bsoff, &bpoff, &bshadows, &bspawned, &bimm};
+  l.super = 1;
+  l.super_off = &boff;
+  l.super_data = &bdata;
+  run_shade(l, n);
+  std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
+  for (std::size_t i = 0; i < n; ++i)
+    tally.supersampled(req[i], children.data() + spawn_off[i], counts[i]);
+  append_children(children, next);
+}
+
+void Renderer::Impl::append_children(const std::vector<rc_ray>& children,
+                                     std::vector<rc_ray>& next) {
+  if (!collecting) {
+    next.insert(next.end(), children.begin(), children.end());
+    return;
+  }
+  for (const rc_ray& r : children)
+    ((r.flags & RC_RAY_KIND_MASK) == RC_RAY_AMBMISS ? misses : next).push_back(r);
+}
+
+} // namespace radcl::render
