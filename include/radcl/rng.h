@@ -77,6 +77,40 @@ RC_RNG_INLINE float rc_random_ld(rc_rng_key key, rc_u32 dim) {
   return rc_bits_to_unit(rot.v[dim & 3u] + key.primary * step);
 }
 
+/* Dimensions dim and dim + 1 (dim even: one block) at the cost of one block. */
+RC_RNG_INLINE void rc_random_pair(rc_rng_key key, rc_u32 dim, float* a, float* b) {
+  rc_u32x4 x = rc_random_bits(key, dim >> 2);
+  *a = rc_bits_to_unit(x.v[dim & 3u]);
+  *b = rc_bits_to_unit(x.v[(dim + 1u) & 3u]);
+}
+RC_RNG_INLINE void rc_random_ld_pair(rc_rng_key key, rc_u32 dim, float* a, float* b) {
+  rc_rng_key shared = key;
+  shared.primary = 0x9E3779B9u;
+  rc_u32x4 rot = rc_random_bits(shared, dim >> 2);
+  *a = rc_bits_to_unit(rot.v[dim & 3u] + key.primary * 0xC13FA9A9u);
+  *b = rc_bits_to_unit(rot.v[(dim + 1u) & 3u] + key.primary * 0x91E10DA5u);
+}
+/* Numbers of one key read in rising dimensions, each block of four computed once: the same
+ * values as rc_random at a fraction of the generator's work. */
+typedef struct rc_rng_stream {
+  rc_rng_key key;
+  rc_u32 block;
+  rc_u32x4 bits;
+} rc_rng_stream;
+RC_RNG_INLINE rc_rng_stream rc_stream(rc_rng_key key) {
+  rc_rng_stream s;
+  s.key = key;
+  s.block = 0xFFFFFFFFu; /* no dimension's block */
+  s.bits.v[0] = s.bits.v[1] = s.bits.v[2] = s.bits.v[3] = 0u;
+  return s;
+}
+RC_RNG_INLINE float rc_stream_random(rc_rng_stream* s, rc_u32 dim) {
+  if ((dim >> 2) != s->block) {
+    s->block = dim >> 2;
+    s->bits = rc_random_bits(s->key, s->block);
+  }
+  return rc_bits_to_unit(s->bits.v[dim & 3u]);
+}
 RC_RNG_INLINE rc_rng_key rc_make_key(rc_u32 primary, rc_u32 sample, rc_u32 depth, rc_u32 seed) {
   rc_rng_key k;
   k.primary = primary;

@@ -31,7 +31,8 @@ static inline rc_glass rc_glass_setup(global const float* a, uint nargs, float c
   /* Internal cosine; the path through the pane grows as 1/cos2. */
   float n2 = n * n;
   float cos2 = sqrt((1.0f - 1.0f / n2) + cos1 * cos1 / n2);
-  float3 t = g.hastrans ? pow(tn, (float3)(1.0f / cos2)) : tn;
+  /* tn^(1/cos2) as exp2 of log2 (tn > 0 here): pow's extended precision was 2% of a run */
+  float3 t = g.hastrans ? exp2(log2(tn) / cos2) : tn;
   float re = (cos1 - n * cos2) / (cos1 + n * cos2);
   re *= re; /* TE */
   float rm = (1.0f / cos1 - n / cos2) / (1.0f / cos1 + n / cos2);

@@ -120,7 +120,7 @@ void triangle_filter(const RTCFilterFunctionNArguments* args) {
     return;
   }
   // Occlusion queries stop at any hit; only closest-hit queries keep the best.
-  if (rc->closest) rc->accept(t, key);
+  if (rc->closest) rc->accept(t, key, n);
 }
 
 } // namespace radcl::geometry

@@ -112,16 +112,18 @@ struct RayContext {
   bool best = false;
   double best_t = 0;
   std::uint64_t best_key = 0;
+  Vec3 best_normal{}; // a triangle's (local) plane normal: the answer needs not compute it again
   bool closest = false; // a closest-hit query (not an occlusion test)
   bool raw = false;     // SceneGeometry::intersect_raw: the filter accepts every candidate
   // Whether a candidate at exact distance cand_t loses to the current closest hit.
   bool loses(double cand_t, std::uint64_t key) const {
     return best && (cand_t > best_t || (cand_t == best_t && key > best_key));
   }
-  void accept(double cand_t, std::uint64_t key) {
+  void accept(double cand_t, std::uint64_t key, const Vec3& normal = {}) {
     best = true;
     best_t = cand_t;
     best_key = key;
+    best_normal = normal;
   }
 };
 

@@ -106,8 +106,15 @@ std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, 
     n = rc.normal;
     h.object = p.analytic[rh.hit.primID].object;
   } else {
-    const Vec3 o = rec.from_world.point(rc.org), d = rec.from_world.vector(rc.dir);
-    if (!triangle_distance(p, rh.hit.primID, o, d, h.t, n)) return std::nullopt;
+    // The filter accepted this triangle last, with its exact distance and plane normal (the
+    // same local ray, so the same values); without the filter (raw queries) they are computed.
+    if (rc.best && !rc.raw) {
+      h.t = rc.best_t;
+      n = rc.best_normal;
+    } else {
+      const Vec3 o = rec.from_world.point(rc.org), d = rec.from_world.vector(rc.dir);
+      if (!triangle_distance(p, rh.hit.primID, o, d, h.t, n)) return std::nullopt;
+    }
     h.u = rh.hit.u;
     h.v = rh.hit.v;
     if (p.mesh != nullptr) {

@@ -10,25 +10,28 @@ namespace radcl::render {
 using namespace ambient;
 using namespace pipeline;
 
-std::vector<std::uint8_t> Renderer::Impl::trace_shadows(std::vector<rc_shadow>& shadows) {
+void Renderer::Impl::trace_shadows(std::vector<rc_shadow>& shadows,
+                                   std::vector<std::uint8_t>& blocked) {
   constexpr std::size_t kChunk = 1u << 18;
-  std::vector<std::uint8_t> blocked(shadows.size(), 1);
+  blocked.assign(shadows.size(), 1);
   for (std::size_t a = 0; a < shadows.size(); a += kChunk)
     trace_shadow_chunk(shadows.data() + a, std::min(kChunk, shadows.size() - a),
                        blocked.data() + a);
-  return blocked;
 }
 
 void Renderer::Impl::trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::uint8_t* blocked) {
-  std::vector<std::uint32_t> slot;
-  std::vector<rc_shadow> cur;
+  std::vector<std::uint32_t>& slot = shadow_slot;
+  std::vector<rc_shadow>& cur = shadow_cur;
+  slot.clear();
+  cur.clear();
   // Estimates and empty slots of the -dt selection (source RC_NONE) are not rays.
   for (std::size_t i = 0; i < n; ++i)
     if (shadows[i].source != RC_NONE) {
       slot.push_back(static_cast<std::uint32_t>(i));
       cur.push_back(shadows[i]);
     }
-  std::vector<std::uint32_t> state(cur.size(), 0);
+  std::vector<std::uint32_t>& state = shadow_state;
+  state.assign(cur.size(), 0);
   // Radiance traces shadow rays on until their weight vanishes; a glass stack that needs
   // more steps than this contributes nothing measurable.
   constexpr int kMaxSteps = 64;
@@ -56,16 +59,20 @@ void Renderer::Impl::trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::
     stats.shadow += m;
     timed.start(Phase::ShadowStep);
 
-    device::Buffer& bcur = scratch(kStepRays, cur);
-    device::Buffer& bhits = scratch(kStepHits, hits);
+    device::Buffer& bcur = scratch(kStepRays, m * sizeof(rc_shadow));
+    write_rows(bcur, cur.data(), m * sizeof(rc_shadow));
+    device::Buffer& bhits = scratch(kStepHits, m * sizeof(rc_hit));
+    write_rows(bhits, hits.data(), m * sizeof(rc_hit));
     device::Buffer& bstate = scratch(kStepState, state);
     std::uint32_t um = static_cast<std::uint32_t>(m);
     shadow_step.arg(0, bcur).arg(1, bhits).arg(2, bstate).arg(3, um);
     set_scene_args(shadow_step, 4);
     ctx.run(shadow_step, m);
-    bcur.read_later(cur.data(), m * sizeof(rc_shadow)); // into place: no fresh, zeroed vectors
+    // Into place (no fresh, zeroed vectors); in one wait where they are transfers.
+    if (!bcur.zero_copy()) bcur.read_later(cur.data(), m * sizeof(rc_shadow));
     bstate.read_later(state.data(), m * sizeof(std::uint32_t));
     ctx.finish();
+    if (bcur.zero_copy()) read_rows(bcur, cur.data(), m * sizeof(rc_shadow));
 
     std::size_t k = 0;
     for (std::size_t i = 0; i < m; ++i) {

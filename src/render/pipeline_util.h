@@ -1,9 +1,11 @@
 // Small helpers the wave pipeline's files share.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "radcl/device/buffer.h"
@@ -76,6 +78,45 @@ template <class F> void for_rows(std::size_t n, const F& f) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
       f(i);
   });
+}
+
+// memcpy with every core for large copies: a chunk's rays and hits copied on one thread held
+// the other cores idle (2 cores: 2 GB of such copies in a run of 11 M rays).
+inline void parallel_copy(void* dst, const void* src, std::size_t bytes) {
+  constexpr std::size_t kBlock = std::size_t{1} << 18;
+  if (bytes < 4 * kBlock) {
+    std::memcpy(dst, src, bytes);
+    return;
+  }
+  tbb::parallel_for(std::size_t{0}, (bytes + kBlock - 1) / kBlock, [&](std::size_t k) {
+    const std::size_t at = k * kBlock;
+    std::memcpy(static_cast<char*>(dst) + at, static_cast<const char*>(src) + at,
+                std::min(kBlock, bytes - at));
+  });
+}
+
+// `bytes` from src into the start of `b`; where the device shares the host's memory, straight
+// into its allocation with every core.
+inline void write_rows(device::Buffer& b, const void* src, std::size_t bytes) {
+  if (!b.zero_copy()) {
+    b.write(src, bytes);
+    return;
+  }
+  void* p = b.map();
+  parallel_copy(p, src, bytes);
+  b.unmap(p);
+}
+
+// The first `bytes` of `b` into dst, now (after every command before); with every core where
+// the device shares the host's memory.
+inline void read_rows(device::Buffer& b, void* dst, std::size_t bytes) {
+  if (!b.zero_copy()) {
+    b.read(dst, bytes);
+    return;
+  }
+  void* p = b.map();
+  parallel_copy(dst, p, bytes);
+  b.unmap(p);
 }
 
 // Whether lookups in an irradiance cache run: records to look up, -aa > 0 and a bounce.

@@ -100,7 +100,8 @@ std::vector<float> Renderer::Impl::pretest(const CompiledSources& so,
   verts = upload(ctx, so.verts);
   mirrors = upload(ctx, so.mirrors);
   std::vector<rc_shadow> sh = rays;
-  std::vector<std::uint8_t> blocked = trace_shadows(sh);
+  std::vector<std::uint8_t> blocked;
+  trace_shadows(sh, blocked);
   std::vector<float> out(sh.size());
   for (std::size_t i = 0; i < sh.size(); ++i)
     out[i] = blocked[i] ? 0.0f : sh[i].contrib.x;

@@ -97,6 +97,9 @@ struct Renderer::Impl {
   // A wave's children join the next wave; while the cache is built, its record requests (they
   // are not rays) go to `misses` instead, in the same order.
   void append_children(const std::vector<rc_ray>& children, std::vector<rc_ray>& next);
+  // The same for children already written to next[first...]: the record requests among them
+  // move to `misses`, the rest close up in order.
+  void set_misses_aside(std::vector<rc_ray>& next, std::size_t first);
   // The second pass of -as: the hemispheres' rays are shaded again and write only the
   // super-samples the tally tree asked for.
   void supersample(const std::vector<TallyTree::SuperRequest>& req, std::vector<rc_ray>& next);
@@ -177,21 +180,33 @@ struct Renderer::Impl {
                const std::vector<std::uint32_t>& nsh, const std::vector<std::uint32_t>& nsp,
                const std::vector<std::uint32_t>& shadow_off,
                const std::vector<std::uint32_t>& spawn_off, std::vector<rc_shadow>& shadows,
-               std::vector<rc_ray>& children);
+               rc_ray* children);
+  // shade_slice's host-side vectors, kept from slice to slice: fresh ones of this size were
+  // paged in and cleared by the kernel every time (8% of a run's CPU time on 2 cores).
+  struct ShadeScratch {
+    std::vector<std::uint32_t> shadow_off, spawn_off, nsh, nsp, over;
+    std::vector<char> later;
+    std::vector<rc_shadow> shadows, requested;
+    std::vector<std::uint8_t> blocked;
+    std::vector<rc_float4> contrib, total;
+  } shade_scratch;
 
   // ---- Shadow rays (intersect_shadow.cpp) ----
   // Shadow rays in steps: Embree finds each one's next hit, the kernel decides whether it
   // reached its source, is blocked, or continues through a transmitting surface with its
   // contribution reduced (then it is traced again from there). Each ray keeps its slot, so the
   // result does not depend on the order of work. Survivors' final contributions are written
-  // back into `shadows`; the return value marks the blocked ones.
+  // back into `shadows`; `blocked` marks the blocked ones.
   // In chunks, so the host's per-ray scratch (Embree answers above all) stays in memory that is
   // reused rather than freshly mapped and cleared.
-  std::vector<std::uint8_t> trace_shadows(std::vector<rc_shadow>& shadows);
+  void trace_shadows(std::vector<rc_shadow>& shadows, std::vector<std::uint8_t>& blocked);
   // Rays [shadows, shadows + n): contributions written back in place, blocked[i] cleared for
   // each one that reached its source.
   void trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::uint8_t* blocked);
-  std::vector<rc_hit> shadow_hits; // a step's answers, kept from step to step
+  // A step's rays, their answers, states and slots, kept from step to step.
+  std::vector<rc_shadow> shadow_cur;
+  std::vector<rc_hit> shadow_hits;
+  std::vector<std::uint32_t> shadow_state, shadow_slot;
 
   // ---- The irradiance cache's passes (cache_passes.cpp; docs/cache-internals.md) ----
   // How a primary starts when it is a hemisphere sample of a record being made.

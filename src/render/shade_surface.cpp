@@ -92,7 +92,7 @@ void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
                              const std::vector<std::uint32_t>& nsp,
                              const std::vector<std::uint32_t>& shadow_off,
                              const std::vector<std::uint32_t>& spawn_off,
-                             std::vector<rc_shadow>& shadows, std::vector<rc_ray>& children) {
+                             std::vector<rc_shadow>& shadows, rc_ray* children) {
   std::size_t m = over.size();
   std::vector<rc_ray> r(m);
   std::vector<rc_hit> h(m);
@@ -120,7 +120,7 @@ void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
   for (std::size_t k = 0; k < m; ++k) {
     if (!shadows.empty()) // empty: a thrown-away pass
       std::copy_n(sh.data() + soff[k], nsh[over[k]], shadows.data() + shadow_off[over[k]]);
-    std::copy_n(sp.data() + poff[k], nsp[over[k]], children.data() + spawn_off[over[k]]);
+    std::copy_n(sp.data() + poff[k], nsp[over[k]], children + spawn_off[over[k]]);
   }
 }
 
@@ -129,9 +129,9 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   Timed timed(prof, Phase::Shade);
   std::uint32_t un = static_cast<std::uint32_t>(n);
   device::Buffer& brays = scratch(kRays, n * sizeof(rc_ray));
-  brays.write(rays, n * sizeof(rc_ray));
+  write_rows(brays, rays, n * sizeof(rc_ray));
   device::Buffer& bhits = scratch(kHits, n * sizeof(rc_hit));
-  bhits.write(hit, n * sizeof(rc_hit));
+  write_rows(bhits, hit, n * sizeof(rc_hit));
   const std::uint32_t csh = cap_shadow, csp = cap_spawn;
   device::Buffer& bslot_sh = scratch(kShadowSlots, n * csh * sizeof(rc_shadow));
   device::Buffer& bslot_sp = scratch(kSpawnSlots, n * csp * sizeof(rc_ray));
@@ -150,7 +150,10 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   }
   // The counts and this slice's slots (not the pool buffers whole, both ways), read in one
   // wait: a small wave's time is mostly the latency of its transfers.
-  std::vector<std::uint32_t> shadow_off(n), spawn_off(n);
+  ShadeScratch& x = shade_scratch;
+  std::vector<std::uint32_t>&shadow_off = x.shadow_off, &spawn_off = x.spawn_off;
+  shadow_off.resize(n);
+  spawn_off.resize(n);
   bnshadow.read_later(shadow_off.data(), n * 4);
   bnspawn.read_later(spawn_off.data(), n * 4);
   const auto* ssh = throwaway ? nullptr
@@ -164,48 +167,62 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     prof.add_wave(n, std::chrono::duration<double>(w1 - w0).count(),
                   std::chrono::duration<double>(w2 - w1).count());
   }
-  std::vector<std::uint32_t> over;
+  std::vector<std::uint32_t>& over = x.over;
+  over.clear();
   for (std::size_t i = 0; i < n; ++i)
     if (shadow_off[i] & 0x80000000u) {
       shadow_off[i] &= 0x7FFFFFFFu;
       over.push_back(static_cast<std::uint32_t>(i));
     }
-  std::vector<std::uint32_t> nsh = shadow_off, nsp = spawn_off;
+  x.nsh.assign(shadow_off.begin(), shadow_off.end());
+  x.nsp.assign(spawn_off.begin(), spawn_off.end());
+  const std::vector<std::uint32_t>&nsh = x.nsh, &nsp = x.nsp;
   std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
-  // A thrown-away pass wants only the children (they may miss too).
-  std::vector<rc_shadow> shadows(throwaway ? 0 : nshadow);
-  std::vector<rc_ray> children(nspawn);
+  // The children go straight to the next generation's queue; a thrown-away pass wants only
+  // them (they may miss too).
+  std::vector<rc_shadow>& shadows = x.shadows;
+  shadows.resize(throwaway ? 0 : nshadow);
+  const std::size_t first_child = next.size();
+  next.resize(first_child + nspawn);
+  rc_ray* children = next.data() + first_child;
   {
-    std::vector<char> later(n, 0); // shaded again below
+    std::vector<char>& later = x.later; // shaded again below
+    later.assign(n, 0);
     for (std::uint32_t i : over)
       later[i] = 1;
     for_rows(n, [&](std::size_t i) {
       if (later[i]) return;
       if (ssh) std::copy_n(ssh + i * csh, nsh[i], shadows.data() + shadow_off[i]);
-      std::copy_n(ssp + i * csp, nsp[i], children.data() + spawn_off[i]);
+      std::copy_n(ssp + i * csp, nsp[i], children + spawn_off[i]);
     });
   }
   if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
   if (throwaway) {
-    append_children(children, next);
+    set_misses_aside(next, first_child);
     return;
   }
   device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
 
-  std::vector<rc_shadow> requested;
+  std::vector<rc_shadow>& requested = x.requested;
+  requested.clear();
   if (settings.trace == RenderSettings::Trace::RaysAndShadows) requested = shadows;
   timed.stop();
-  std::vector<std::uint8_t> blocked = trace_shadows(shadows);
+  std::vector<std::uint8_t>& blocked = x.blocked;
+  trace_shadows(shadows, blocked);
   timed.start(Phase::Accumulate);
   // rc_accumulate's view of a request: its contribution, w < 0 for a traced ray, else the
   // -dt estimate's count of tested requests before it.
-  std::vector<rc_float4> contrib(nshadow);
-  for_rows(nshadow, [&](std::size_t k) {
-    const rc_shadow& q = shadows[k];
-    contrib[k] = q.contrib;
-    contrib[k].w = q.source != RC_NONE ? -1.0f : static_cast<float>(q.pad0);
-  });
-  device::Buffer& bcontrib = scratch(kShadows, contrib);
+  device::Buffer& bcontrib = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_float4));
+  {
+    std::vector<rc_float4>& contrib = x.contrib;
+    contrib.resize(nshadow);
+    for_rows(nshadow, [&](std::size_t k) {
+      const rc_shadow& q = shadows[k];
+      contrib[k] = q.contrib;
+      contrib[k].w = q.source != RC_NONE ? -1.0f : static_cast<float>(q.pad0);
+    });
+    if (nshadow) bcontrib.write(contrib.data(), contrib.size() * sizeof(rc_float4));
+  }
   device::Buffer& bblocked = scratch(kBlocked, blocked);
   device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
   accumulate.arg(0, bimm)
@@ -216,7 +233,10 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
       .arg(5, nshadow)
       .arg(6, btotal);
   ctx.run(accumulate, n);
-  std::vector<rc_float4> total = btotal.to_vector<rc_float4>(n);
+  std::vector<rc_float4>& total = x.total;
+  total.resize(n);
+  btotal.read_later(total.data(), n * sizeof(rc_float4));
+  ctx.finish();
   if (tree) {
     std::vector<TallyTree::TracedShadow> ts;
     for (std::size_t i = 0; i < n; ++i) {
@@ -228,10 +248,10 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
           if (requested[k].source != RC_NONE) // not a -dt estimate
             ts.push_back({requested[k], shadows[k].contrib, blocked[k] != 0});
       }
-      tally.shaded(rays[i], hit[i], total[i], children.data() + spawn_off[i], end - spawn_off[i],
+      tally.shaded(rays[i], hit[i], total[i], children + spawn_off[i], end - spawn_off[i],
                    ts.data(), ts.size());
     }
-    append_children(children, next);
+    set_misses_aside(next, first_child);
     return;
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -246,7 +266,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
       m[2] += total[i].z;
     }
   }
-  append_children(children, next);
+  set_misses_aside(next, first_child);
 }
 
 } // namespace radcl::render

@@ -97,14 +97,16 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     }
     root_depth[i] = r.depth;
   });
+  // -I: the measurement point is a diffuse meter facing the given direction, meter_offset()
+  // along it (where Radiance's reversed primary ray meets it); its hits stand in for the first
+  // generation's trace. (A vector of its own: the pooled `hits` keeps its room for the chunks.)
+  std::vector<rc_hit> meters;
   if (settings.irradiance_I && nesting == 0) {
-    // The measurement point is a diffuse meter facing the given direction, meter_offset()
-    // along it (where Radiance's reversed primary ray meets it).
-    hits.resize(prim.size());
+    meters.resize(prim.size());
     for (std::size_t i = 0; i < prim.size(); ++i) {
       Vec3d d = unit(prim[i].dir);
       const Vec3d p = meter_point(geom, prim[i].org, d);
-      rc_hit& h = hits[i];
+      rc_hit& h = meters[i];
       h = rc_hit{};
       h.pos = f4(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2], 1e-5);
       h.nrm = f4(d[0], d[1], d[2], 0);
@@ -120,8 +122,6 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   // chunk before the next, so the per-ray scratch (Embree's answers, slots, shadow requests)
   // is bounded by the chunk and reused, not freshly mapped and cleared for a generation of
   // millions. Chunks keep queue order, so sums and records do not depend on their size.
-  const std::vector<rc_hit> meters =
-      (settings.irradiance_I && nesting == 0) ? std::move(hits) : std::vector<rc_hit>{};
   bool first_wave = true;
   std::vector<rc_ray>& next = next_hold.v;
   const std::size_t chunk = chunk_rays();
@@ -220,6 +220,18 @@ void Renderer::Impl::append_children(const std::vector<rc_ray>& children,
   }
   for (const rc_ray& r : children)
     ((r.flags & RC_RAY_KIND_MASK) == RC_RAY_AMBMISS ? misses : next).push_back(r);
+}
+
+void Renderer::Impl::set_misses_aside(std::vector<rc_ray>& next, std::size_t first) {
+  if (!collecting) return;
+  std::size_t k = first;
+  for (std::size_t i = first; i < next.size(); ++i) {
+    if ((next[i].flags & RC_RAY_KIND_MASK) == RC_RAY_AMBMISS)
+      misses.push_back(next[i]);
+    else
+      next[k++] = next[i];
+  }
+  next.resize(k);
 }
 
 } // namespace radcl::render

@@ -1,7 +1,9 @@
 // Wall time by phase of the renderer's work (RADCL_PROFILE=1 prints it when the renderer ends):
 // where a run's time goes on a device we cannot attach a profiler to, such as the lent GPU.
 // Device phases are measured from the host, so a blocking read counts the kernels before it.
-// Phases nest: a phase's time includes the phases timed inside it.
+// Phases nest: a phase's time includes the phases timed inside it. Each phase also counts the
+// process's CPU time (all threads, PoCL's included), so cores = cpu / wall shows which phases
+// leave cores idle.
 #pragma once
 
 #include <array>
@@ -11,6 +13,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <string>
+#include <time.h>
 
 namespace radcl::render {
 
@@ -53,8 +56,15 @@ public:
     wave_kernel_[b] += kernel;
     wave_reads_[b] += reads;
   }
-  void add(Phase p, double seconds) {
+  // The process's CPU time so far, every thread's.
+  static double cpu_now() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  }
+  void add(Phase p, double seconds, double cpu = 0) {
     sec_[static_cast<int>(p)] += seconds;
+    cpu_[static_cast<int>(p)] += cpu;
     ++calls_[static_cast<int>(p)];
   }
   // The phases, then the profile's lifetime and what no phase timed (phases timed inside
@@ -66,15 +76,18 @@ public:
     static_assert(std::size(names) == static_cast<std::size_t>(Phase::kCount));
     for (int i = 0; i < static_cast<int>(Phase::kCount); ++i)
       if (calls_[i])
-        std::fprintf(f, "profile: %-12s %9.3f s %8llu calls\n", names[i], sec_[i],
-                     static_cast<unsigned long long>(calls_[i]));
+        std::fprintf(f, "profile: %-12s %9.3f s %8llu calls  cpu %8.3f s (%.2f cores)\n", names[i],
+                     sec_[i], static_cast<unsigned long long>(calls_[i]), cpu_[i],
+                     sec_[i] > 0 ? cpu_[i] / sec_[i] : 0.0);
     double timed = 0;
     for (double s : sec_)
       timed += s;
     const double life =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    std::fprintf(f, "profile: %-12s %9.3f s\nprofile: %-12s %9.3f s\n", "lifetime", life, "untimed",
-                 life - timed);
+    const double cpu = cpu_now() - cpu0_;
+    std::fprintf(f, "profile: %-12s %9.3f s %14s cpu %8.3f s (%.2f cores)\n", "lifetime", life, "",
+                 cpu, life > 0 ? cpu / life : 0.0);
+    std::fprintf(f, "profile: %-12s %9.3f s\n", "untimed", life - timed);
     for (std::size_t b = 0; b < wave_n_.size(); ++b)
       if (wave_n_[b])
         std::fprintf(
@@ -97,11 +110,15 @@ public:
       stop();
       ph_ = ph;
       running_ = p_ != nullptr;
-      if (running_) t0_ = std::chrono::steady_clock::now();
+      if (running_) {
+        t0_ = std::chrono::steady_clock::now();
+        c0_ = cpu_now();
+      }
     }
     void stop() {
       if (running_)
-        p_->add(ph_, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count());
+        p_->add(ph_, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(),
+                cpu_now() - c0_);
       running_ = false;
     }
 
@@ -110,6 +127,7 @@ public:
     Phase ph_ = Phase::kCount;
     bool running_ = false;
     std::chrono::steady_clock::time_point t0_{};
+    double c0_ = 0;
   };
 
 private:
@@ -118,7 +136,8 @@ private:
   std::array<std::uint64_t, 6> wave_n_{}, wave_rays_{};
   std::array<double, 6> wave_kernel_{}, wave_reads_{};
   std::chrono::steady_clock::time_point t0_;
-  std::array<double, static_cast<int>(Phase::kCount)> sec_{};
+  double cpu0_ = cpu_now();
+  std::array<double, static_cast<int>(Phase::kCount)> sec_{}, cpu_{};
   std::array<std::uint64_t, static_cast<int>(Phase::kCount)> calls_{};
 };
 
