@@ -64,6 +64,10 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   Spare<rc_hit> hits_hold(spare_hits);
   std::vector<rc_ray>& queue = queue_hold.v;
   std::vector<rc_hit>& hits = hits_hold.v;
+  // Room for a whole generation up front (address space only until used): growing by doubling
+  // paged in and copied 390 MB in 2,000 sensors' run on 2 cores, a tenth of its CPU time.
+  for (std::vector<rc_ray>* v : {&queue, &next_hold.v})
+    if (v->capacity() < 2 * generation_rays()) v->reserve(2 * generation_rays());
   queue.resize(prim.size());
   leak_lists.assign(1, 0u);
   leak_uploaded = 0;
