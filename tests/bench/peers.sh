@@ -24,6 +24,8 @@
 #   PEERS_OUT: folder for the .md and .svg (default: docs/bench)
 #   PEERS_CASES: the cases to run (default "P1 P2 P3 P4 P5"; P4 is skipped with --small)
 #   PEERS_LABEL: appended to each case's name (e.g. "PoCL" for a run with radcl on the CPU)
+#   PEERS_REPEAT: runs of each command, the fastest counted (default 1; on a shared virtual
+#     machine whose times swing by a third from run to run, 3 gives steadier ratios)
 # Each run leaves its rows in $PEERS_OUT/peers.tsv; tests/bench/peers_report.sh merges several
 # runs' files into one table and chart.
 set -euo pipefail
@@ -65,36 +67,47 @@ grid $((n1 - 77)) 0.1 5.9 0.1 3.9 0.8 >> "$work/p1.pts"
 cat "$scenes/office_grid.pts" > "$work/p2.pts"
 grid $((n2 - 77)) 0.1 5.9 0.1 3.9 0.8 >> "$work/p2.pts"
 
+repeat=${PEERS_REPEAT:-1}
 secs() { awk '/^[0-9.]+$/ { t = $1 } END { print t }' "$1"; }
-# radcl dir input output program args... : prints seconds
+least() { printf '%s\n' "$@" | sort -g | head -n 1; }
+# radcl dir input output program args... : prints seconds (the fastest of $repeat runs)
 radcl() {
-  local dir=$1 in=$2 out=$3 prog=$4
+  local dir=$1 in=$2 out=$3 prog=$4 k ts=()
   shift 4
-  ( cd "$dir" && /usr/bin/time -f "%e" "$build/bin/$prog" "$@" < "$in" > "$out" 2> "$work/err" ) ||
-    { cat "$work/err" >&2; exit 1; }
-  secs "$work/err"
+  for ((k = 0; k < repeat; k++)); do
+    ( cd "$dir" && /usr/bin/time -f "%e" "$build/bin/$prog" "$@" < "$in" > "$out" 2> "$work/err" ) ||
+      { cat "$work/err" >&2; exit 1; }
+    ts+=("$(secs "$work/err")")
+  done
+  least "${ts[@]}"
 }
 radiance() {
-  local dir=$1 in=$2 out=$3 prog=$4
+  local dir=$1 in=$2 out=$3 prog=$4 k ts=()
   shift 4
-  ( cd "$dir" && RAYPATH=.:$rlib /usr/bin/time -f "%e" "$rbin/$prog" "$@" < "$in" > "$out" \
-      2> "$work/err" ) || { cat "$work/err" >&2; exit 1; }
-  secs "$work/err"
+  for ((k = 0; k < repeat; k++)); do
+    ( cd "$dir" && RAYPATH=.:$rlib /usr/bin/time -f "%e" "$rbin/$prog" "$@" < "$in" > "$out" \
+        2> "$work/err" ) || { cat "$work/err" >&2; exit 1; }
+    ts+=("$(secs "$work/err")")
+  done
+  least "${ts[@]}"
 }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
 # Mean relative difference of the luminances in two value files (rgb per line).
 differ() { errs "$1" "$2" | awk '{ print $1 }'; }
 # Mean luminance of a picture (radcl's picture reader).
 lum() { "$build/bin/bench_picture_mean" "$1"; }
-warm() { # dir octree: compiles the scene's program
-  ( cd "$1" && head -n 1 "$work/p2.pts" | "$build/bin/rtrace" -h -I -ab 1 -aa 0.2 "$2" > /dev/null )
+warm() { # dir octree options...: compiles the scene's program for these options (with the
+  # cache or without, the kernels differ), on one sensor
+  local dir=$1 oct=$2
+  shift 2
+  ( cd "$dir" && head -n 1 "$work/p2.pts" | "$build/bin/rtrace" -h -I "$@" "$oct" > /dev/null )
 }
 # sensors case dir points octree options...: both renderers' rtrace -I over the points after a
 # warm-up; sets t and r (seconds), the values in $work/c<case>.txt and $work/r<case>.txt.
 sensors() {
   local c=$1 dir=$2 pts=$3 oct=$4
   shift 4
-  warm "$dir" "$oct"
+  warm "$dir" "$oct" "$@"
   t=$(radcl "$dir" "$pts" "$work/c$c.txt" rtrace -n "$cores" -h -I "$@" "$oct")
   r=$(radiance "$dir" "$pts" "$work/r$c.txt" rtrace -n "$cores" -h -I "$@" "$oct")
 }
@@ -129,8 +142,12 @@ if want P3; then
 t=$(radcl "$scenes" /dev/null "$work/c3.hdr" rpict -vf office.vf -x "$res" -y "$res" $picture office_clear.oct)
 r=$(radiance "$scenes" /dev/null "$work/r3.hdr" rpict -vf office.vf -x "$res" -y "$res" $picture office_clear.oct)
 vres=$(cd "$scenes" && "$rbin/vwrays" -d -vf office.vf -x "$res" -y "$res")
-v=$( ( cd "$scenes" && RAYPATH=.:$rlib /usr/bin/time -f "%e" bash -c \
-  "'$rbin/vwrays' -ff -vf office.vf -x $res -y $res | '$rbin/rtrace' -n $cores -ffc $vres $picture office_clear.oct > '$work/v3.hdr'" ) 2>&1 | tail -n 1)
+vs=()
+for ((k = 0; k < repeat; k++)); do
+  vs+=("$( ( cd "$scenes" && RAYPATH=.:$rlib /usr/bin/time -f "%e" bash -c \
+    "'$rbin/vwrays' -ff -vf office.vf -x $res -y $res | '$rbin/rtrace' -n $cores -ffc $vres $picture office_clear.oct > '$work/v3.hdr'" ) 2>&1 | tail -n 1)")
+done
+v=$(least "${vs[@]}")
 dc=$(awk -v a="$(lum "$work/c3.hdr")" -v b="$(lum "$work/r3.hdr")" 'BEGIN { printf "%.2f%%", 100 * (a - b) / b }')
 add P3 "rpict office_view ${res}^2 vs rpict" "$t" "$r" "$(ratio "$r" "$t")" "mean $dc" "(no converged)"
 add P3v "rpict office_view ${res}^2 vs vwrays + rtrace -n $cores" "$t" "$v" "$(ratio "$v" "$t")" "" ""
@@ -167,7 +184,7 @@ mkdir -p "$outdir"
 {
   echo "# run: $(date -u +%Y-%m-%d), radcl at commit $commit on ${device:-an unknown device}" \
     "($cores cores: $cpu), against $("$rbin/rtrace" -version | head -n 1) with -n $cores" \
-    "$([ $small = 1 ] && echo '(--small)')${PEERS_LABEL:+ [$PEERS_LABEL]}"
+    "$([ $small = 1 ] && echo '(--small)')${PEERS_LABEL:+ [$PEERS_LABEL]}$([ "$repeat" -gt 1 ] && echo ", fastest of $repeat runs each")"
   for row in "${rows[@]}"; do
     printf '%s\n' "$row" | awk -F'\t' -v l="${PEERS_LABEL:-}" 'BEGIN { OFS = "\t" }
       { if (l != "") $1 = $1 "/" l; print }'
