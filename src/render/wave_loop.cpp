@@ -8,6 +8,8 @@
 #include "radcl/render/irradiance_meter.h"
 #include "renderer_impl.h"
 
+#include <tbb/task_group.h>
+
 namespace radcl::render {
 
 using namespace ambient;
@@ -126,20 +128,35 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   // chunk before the next, so the per-ray scratch (Embree's answers, slots, shadow requests)
   // is bounded by the chunk and reused, not freshly mapped and cleared for a generation of
   // millions. Chunks keep queue order, so sums and records do not depend on their size.
+  // Embree traces the next chunk while this one is shaded (a task beside the shading, which
+  // leaves cores idle between its kernels and its host steps); the trace only writes that
+  // chunk's hits and its primaries' geometric results, which shading never reads, and every
+  // device command stays on this thread.
   bool first_wave = true;
   std::vector<rc_ray>& next = next_hold.v;
+  Spare<rc_hit> ahead_hold(spare_hits);
+  std::vector<rc_hit>& ahead = ahead_hold.v;
   const std::size_t chunk = chunk_rays();
+  const bool overlap = !std::getenv("RADCL_NO_OVERLAP");
   while (!queue.empty()) {
     const std::size_t n = queue.size();
     peak_generation = std::max(peak_generation, n);
-    for (std::size_t a = 0; a < n; a += chunk) {
-      const std::size_t b = std::min(n, a + chunk);
-      const std::span<const rc_ray> part(queue.data() + a, b - a);
+    const auto part_at = [&](std::size_t a) {
+      return std::span<const rc_ray>(queue.data() + a, std::min(n, a + chunk) - a);
+    };
+    const auto hits_at = [&](std::size_t a, std::vector<rc_hit>& h) {
       if (first_wave && !meters.empty())
-        hits.assign(meters.begin() + static_cast<std::ptrdiff_t>(a),
-                    meters.begin() + static_cast<std::ptrdiff_t>(b));
+        h.assign(meters.begin() + static_cast<std::ptrdiff_t>(a),
+                 meters.begin() + static_cast<std::ptrdiff_t>(std::min(n, a + chunk)));
       else
-        trace(part, hits, res, first_wave);
+        trace(part_at(a), h, res, first_wave);
+    };
+    hits_at(0, hits);
+    for (std::size_t a = 0; a < n; a += chunk) {
+      const std::span<const rc_ray> part = part_at(a);
+      tbb::task_group tracing;
+      const bool more = a + chunk < n;
+      if (more && overlap) tracing.run([&] { hits_at(a + chunk, ahead); });
       test_leaks(part, hits);
       // Shade in slices whose slots fit a modest allocation (a slice keeps queue order, so
       // sums stay in order).
@@ -152,6 +169,9 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
         shade_slice(part.data() + sa, hits.data() + sa, sb - sa, sums, next);
         sa = sb;
       }
+      tracing.wait();
+      if (more && !overlap) hits_at(a + chunk, ahead);
+      std::swap(hits, ahead);
     }
     first_wave = false;
     if (tree)
