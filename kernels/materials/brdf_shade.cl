@@ -1,5 +1,5 @@
 /* Shading of the BRDF materials (Radiance's m_brdf.c), after materials/brdf_func.cl's setup;
- * included by shade.cl where its ray, ambient and direct helpers are known. */
+ * included by shade_material.cl where its ray, ambient and direct helpers are known. */
 
 /* Whether the -ae/-ai lists leave this hit's surface out of the ambient calculation. */
 static inline int rc_brdf_dumb(const rc_scene_args* S, const rc_hit* h) {

@@ -1,4 +1,4 @@
-/* The direct calculation (Radiance's direct()), included by shade.cl after rc_out.
+/* The direct calculation (Radiance's direct()), included by shade_material.cl (after rc_out).
  *
  * Every source sample with a positive potential contribution becomes a candidate shadow
  * request. With -dt 0 all of them are tested, in source order. With -dt > 0 the candidates are

@@ -48,7 +48,7 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
   p.av = f4(st.av[0], st.av[1], st.av[2], st.lw);
   p.direct = f4(st.ds, st.dj, st.dt, st.dc);
   // Rays leave surfaces at least this far along; the kernels widen it where a point's float
-  // coordinates are coarser (rc_leave in shade.cl), so small detail near the centre of a
+  // coordinates are coarser (rc_leave in hit_output.cl), so small detail near the centre of a
   // huge scene is not skipped.
   p.spec = f4(st.ss, st.st, geom.epsilon(), 0);
   p.seed = st.seed;

@@ -286,7 +286,7 @@ TEST_F(StabilityDegenerate, HugeGroundWithSmallDetail) {
 }
 
 // The same kind of detail 4 km from the scene's centre, where float positions are 0.24 mm
-// apart and rays leave surfaces 8e-7 x 4000 = 3.2 mm along (shade.cl's rc_leave): a fin 1 cm
+// apart and rays leave surfaces 8e-7 x 4000 = 3.2 mm along (hit_output.cl's rc_leave): a fin 1 cm
 // tall shades the ground 5 mm and more from it; the open ground reads the sun.
 std::vector<double> far_fin_irradiance(const std::vector<double>& gaps, double& full) {
   const double L = 1e6, ang = 0.5, el = 30 * kPi / 180;
