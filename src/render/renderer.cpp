@@ -1,5 +1,6 @@
 #include "radcl/render/renderer.h"
 
+#include <cstdio>
 #include <utility>
 
 #include "pipeline_util.h"
@@ -28,7 +29,18 @@ device::Program built(PhaseProfile& prof, device::Context& c, const device::Prog
 } // namespace
 
 Renderer::Impl::~Impl() {
-  if (prof.on()) prof.print(stderr);
+  if (!prof.on()) return;
+  prof.print(stderr);
+  // The memory the pipeline kept for reuse (paged in once, a cost a short run pays in full).
+  std::size_t dev = 0, host = 0;
+  for (int k = 0; k < kScratchSlots; ++k)
+    dev += scratch.bytes(static_cast<ScratchSlot>(k));
+  for (const auto& v : spare_rays)
+    host += v.capacity() * sizeof(rc_ray);
+  for (const auto& v : spare_hits)
+    host += v.capacity() * sizeof(rc_hit);
+  std::fprintf(stderr, "profile: scratch      %9.1f MB device buffers, %.1f MB queues\n",
+               static_cast<double>(dev) / 1e6, static_cast<double>(host) / 1e6);
 }
 
 Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)

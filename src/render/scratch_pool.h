@@ -53,6 +53,9 @@ public:
     return b;
   }
 
+  // Bytes held, by slot.
+  std::size_t bytes(ScratchSlot slot) const { return pool_[slot].size(); }
+
 private:
   device::Context& ctx_;
   std::vector<device::Buffer> pool_;
