@@ -1,6 +1,8 @@
 // Stage: shadow rays, stepped through Embree and rc_shadow_step until each reaches its source
 // or is blocked.
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "pipeline_util.h"
 #include "renderer_impl.h"
@@ -24,12 +26,23 @@ void Renderer::Impl::trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::
   std::vector<rc_shadow>& cur = shadow_cur;
   slot.clear();
   cur.clear();
-  // Estimates and empty slots of the -dt selection (source RC_NONE) are not rays.
-  for (std::size_t i = 0; i < n; ++i)
-    if (shadows[i].source != RC_NONE) {
-      slot.push_back(static_cast<std::uint32_t>(i));
-      cur.push_back(shadows[i]);
-    }
+  // Estimates and empty slots of the -dt selection (source RC_NONE) are not rays. Where there
+  // are none (a hit with two source samples or fewer writes no estimate), the chunk is copied
+  // whole, on every core.
+  const bool all_rays =
+      std::none_of(shadows, shadows + n, [](const rc_shadow& q) { return q.source == RC_NONE; });
+  if (all_rays) {
+    cur.resize(n);
+    parallel_copy(cur.data(), shadows, n * sizeof(rc_shadow));
+    slot.resize(n);
+    std::iota(slot.begin(), slot.end(), std::uint32_t{0});
+  } else {
+    for (std::size_t i = 0; i < n; ++i)
+      if (shadows[i].source != RC_NONE) {
+        slot.push_back(static_cast<std::uint32_t>(i));
+        cur.push_back(shadows[i]);
+      }
+  }
   std::vector<std::uint32_t>& state = shadow_state;
   state.assign(cur.size(), 0);
   // Radiance traces shadow rays on until their weight vanishes; a glass stack that needs
