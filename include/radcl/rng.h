@@ -69,12 +69,17 @@ RC_RNG_INLINE float rc_random(rc_rng_key key, rc_u32 dim) {
 /* A low-discrepancy alternative over the primary index: the R2 sequence (Roberts' generalised
  * golden ratio, 2-D) in 32-bit fixed point, rotated per (sample, depth, seed, dimension).
  * Consecutive primaries (neighbouring pixels) fill [0,1)^2 evenly for each dimension pair. */
-RC_RNG_INLINE float rc_random_ld(rc_rng_key key, rc_u32 dim) {
+RC_RNG_INLINE void rc_random_ld_pair(rc_rng_key key, rc_u32 dim, float* a, float* b) {
   rc_rng_key shared = key;
   shared.primary = 0x9E3779B9u; /* the rotation must not depend on the primary */
   rc_u32x4 rot = rc_random_bits(shared, dim >> 2);
-  rc_u32 step = (dim & 1u) ? 0x91E10DA5u : 0xC13FA9A9u; /* 2^32 / phi2^2, 2^32 / phi2 */
-  return rc_bits_to_unit(rot.v[dim & 3u] + key.primary * step);
+  *a = rc_bits_to_unit(rot.v[dim & 3u] + key.primary * 0xC13FA9A9u);        /* 2^32 / phi2 */
+  *b = rc_bits_to_unit(rot.v[(dim + 1u) & 3u] + key.primary * 0x91E10DA5u); /* 2^32 / phi2^2 */
+}
+RC_RNG_INLINE float rc_random_ld(rc_rng_key key, rc_u32 dim) {
+  float a, b;
+  rc_random_ld_pair(key, dim & ~1u, &a, &b);
+  return (dim & 1u) ? b : a;
 }
 
 /* Dimensions dim and dim + 1 (dim even: one block) at the cost of one block. */
@@ -82,13 +87,6 @@ RC_RNG_INLINE void rc_random_pair(rc_rng_key key, rc_u32 dim, float* a, float* b
   rc_u32x4 x = rc_random_bits(key, dim >> 2);
   *a = rc_bits_to_unit(x.v[dim & 3u]);
   *b = rc_bits_to_unit(x.v[(dim + 1u) & 3u]);
-}
-RC_RNG_INLINE void rc_random_ld_pair(rc_rng_key key, rc_u32 dim, float* a, float* b) {
-  rc_rng_key shared = key;
-  shared.primary = 0x9E3779B9u;
-  rc_u32x4 rot = rc_random_bits(shared, dim >> 2);
-  *a = rc_bits_to_unit(rot.v[dim & 3u] + key.primary * 0xC13FA9A9u);
-  *b = rc_bits_to_unit(rot.v[(dim + 1u) & 3u] + key.primary * 0x91E10DA5u);
 }
 /* Numbers of one key read in rising dimensions, each block of four computed once: the same
  * values as rc_random at a fraction of the generator's work. */

@@ -75,14 +75,10 @@ void Renderer::Impl::supersample_hemispheres(const std::vector<rc_amb_hemi>& hem
       const Vec3d n = {h.nrm.x, h.nrm.y, h.nrm.z}, ux = {h.ux.x, h.ux.y, h.ux.z},
                   uy = {h.uy.x, h.uy.y, h.uy.z};
       for (int m = 1; m <= nss && cnt > 0; ++m, --cnt) {
-        const auto d =
-            square_to_disk((j + rc_random(key, dim + 1)) / ns, (i + rc_random(key, dim)) / ns);
+        const Vec3d dir = hemisphere_dir(n, ux, uy, (j + rc_random(key, dim + 1)) / ns,
+                                         (i + rc_random(key, dim)) / ns);
         dim += 2;
-        const double z = std::sqrt(std::max(0.0, 1 - d[0] * d[0] - d[1] * d[1]));
-        Vec3d dir;
-        for (int c = 0; c < 3; ++c)
-          dir[c] = d[0] * ux[c] + d[1] * uy[c] + z * n[c];
-        extra.push_back({first.org, unit(dir), 0, next_sample_id++});
+        extra.push_back({first.org, dir, 0, next_sample_id++});
         extra_start.push_back(start[h.first]);
         division.push_back(h.first + k);
       }
@@ -180,13 +176,9 @@ void Renderer::Impl::sample_hemispheres(const std::vector<const rc_ray*>& chosen
     for (int i = 0; i < ns; ++i)
       for (int j = 0; j < ns; ++j) {
         const std::uint32_t dim = 2u * static_cast<std::uint32_t>(i * ns + j);
-        const auto d =
-            square_to_disk((j + rc_random(key, dim + 1)) / ns, (i + rc_random(key, dim)) / ns);
-        const double z = std::sqrt(std::max(0.0, 1 - d[0] * d[0] - d[1] * d[1]));
-        Vec3d dir;
-        for (int k = 0; k < 3; ++k)
-          dir[k] = d[0] * fr.ux[k] + d[1] * fr.uy[k] + z * n[k];
-        rays[at] = {o, unit(dir), 0, id++};
+        const Vec3d dir = hemisphere_dir(n, fr.ux, fr.uy, (j + rc_random(key, dim + 1)) / ns,
+                                         (i + rc_random(key, dim)) / ns);
+        rays[at] = {o, dir, 0, id++};
         start[at] = s;
         ++at;
       }

@@ -65,6 +65,18 @@ inline std::array<double, 2> square_to_disk(double sx, double sy) {
   return {r * std::cos(phi), r * std::sin(phi)};
 }
 
+// The cosine-weighted direction about n (tangents ux, uy) of the point (sx, sy) of the unit
+// square, by the concentric map: a record's hemisphere samples and their -as super-samples.
+inline Vec3d hemisphere_dir(const Vec3d& n, const Vec3d& ux, const Vec3d& uy, double sx,
+                            double sy) {
+  const auto d = square_to_disk(sx, sy);
+  const double z = std::sqrt(std::max(0.0, 1 - d[0] * d[0] - d[1] * d[1]));
+  Vec3d dir;
+  for (int k = 0; k < 3; ++k)
+    dir[k] = d[0] * ux[k] + d[1] * uy[k] + z * n[k];
+  return unit(dir);
+}
+
 // Runs f(i) for every i in [0, n): in parallel where there are enough to pay for it (the
 // per-ray host loops of a wave of millions of hemisphere samples).
 template <class F> void for_rows(std::size_t n, const F& f) {
