@@ -16,7 +16,7 @@ stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 mkdir -p "$stage"/{bin,lib,ref,radiance}
 cp "$build"/bin/{radcl,rtrace,rpict,gensky} "$stage/bin/"
-for t in "$build"/bin/bench_{gen_scenes,picture_mean}; do # tests/bench/peers.sh's helpers
+for t in "$build"/bin/bench_{gen_scenes,picture_mean,embree_rays}; do # peers.sh helpers, the Embree limit
   if [ -e "$t" ]; then cp "$t" "$stage/bin/"; fi
 done
 for t in "$build"/bin/test_{render,cli,device,calc,ambient}_*; do

@@ -237,6 +237,11 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   total.resize(n);
   btotal.read_later(total.data(), n * sizeof(rc_float4));
   ctx.finish();
+  if (tree && settings.trace == RenderSettings::Trace::Off) {
+    tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(), n);
+    set_misses_aside(next, first_child);
+    return;
+  }
   if (tree) {
     std::vector<TallyTree::TracedShadow> ts;
     for (std::size_t i = 0; i < n; ++i) {

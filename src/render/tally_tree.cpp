@@ -4,6 +4,9 @@
 
 #include "radcl/rng.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace radcl::render {
 
 namespace {
@@ -72,6 +75,50 @@ void TallyTree::add(std::uint32_t node, const rc_float4& c, bool mirrored) {
   }
 }
 
+std::size_t TallyTree::run_length(const rc_ray* children, std::size_t k, std::size_t nchildren) {
+  if (!(children[k].cell & RC_CELL_FLAG)) return 0;
+  // A hemisphere's first samples are consecutive, division 0 first.
+  const std::uint32_t which = RC_CELL_WHICH(children[k].cell);
+  std::size_t m = 0;
+  while (k + m < nchildren && (children[k + m].cell & RC_CELL_FLAG) &&
+         RC_CELL_WHICH(children[k + m].cell) == which && RC_CELL_INDEX(children[k + m].cell) == m)
+    ++m;
+  return m;
+}
+
+void TallyTree::make_hemi(const rc_ray& ray, const rc_hit& hit, rc_ray* children, std::size_t k,
+                          std::size_t m, std::uint32_t node, std::uint32_t hemi) {
+  const rc_ray& c = children[k];
+  Hemi& h = hemis_[hemi];
+  h.ray = ray;
+  h.hit = hit;
+  h.which = RC_CELL_WHICH(c.cell);
+  h.ns = static_cast<std::uint32_t>(std::lround(std::sqrt(static_cast<double>(m))));
+  h.budget = RC_CELL_BUDGET(c.cell);
+  h.second = false;
+  const float pc[3] = {ray.coef.x, ray.coef.y, ray.coef.z};
+  const float cc[3] = {c.coef.x, c.coef.y, c.coef.z};
+  for (int i = 0; i < 3; ++i)
+    h.acoef[i] = pc[i] > 0 ? static_cast<double>(cc[i]) / pc[i] : 0.0;
+  h.node = node;
+  h.first_cell = node + 1;
+  Node& hn = nodes_[node];
+  hn = Node{};
+  hn.kind = Kind::Hemi;
+  hn.parent = ray.tally;
+  hn.pending = static_cast<std::int64_t>(m);
+  hn.hemi = hemi;
+  for (std::size_t j = 0; j < m; ++j) {
+    Node& cn = nodes_[h.first_cell + j];
+    cn = Node{};
+    cn.kind = Kind::Cell;
+    cn.parent = node;
+    cn.pending = trace_ ? 0 : 1; // in trace mode the sample's own node counts
+    children[k + j].tally = h.first_cell + static_cast<std::uint32_t>(j);
+    children[k + j].cell = 0;
+  }
+}
+
 void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& total,
                        rc_ray* children, std::size_t nchildren, const TracedShadow* shadows,
                        std::size_t nshadows) {
@@ -90,57 +137,97 @@ void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& to
     }
   }
   for (std::size_t k = 0; k < nchildren;) {
-    rc_ray& c = children[k];
-    if (!(c.cell & RC_CELL_FLAG)) {
+    const std::size_t m = run_length(children, k, nchildren);
+    if (m == 0) {
       if (trace_)
-        c.tally = ray_node(ray.tally, rec);
+        children[k].tally = ray_node(ray.tally, rec);
       else
-        ++nodes_[c.tally].pending;
+        ++nodes_[children[k].tally].pending;
       ++k;
       continue;
     }
-    // A hemisphere's first samples are consecutive, division 0 first.
-    std::uint32_t which = RC_CELL_WHICH(c.cell);
-    std::size_t m = 0;
-    while (k + m < nchildren && (children[k + m].cell & RC_CELL_FLAG) &&
-           RC_CELL_WHICH(children[k + m].cell) == which && RC_CELL_INDEX(children[k + m].cell) == m)
-      ++m;
-    Hemi h;
-    h.ray = ray;
-    h.hit = hit;
-    h.which = which;
-    h.ns = static_cast<std::uint32_t>(std::lround(std::sqrt(static_cast<double>(m))));
-    h.budget = RC_CELL_BUDGET(c.cell);
-    const float pc[3] = {ray.coef.x, ray.coef.y, ray.coef.z};
-    const float cc[3] = {c.coef.x, c.coef.y, c.coef.z};
-    for (int i = 0; i < 3; ++i)
-      h.acoef[i] = pc[i] > 0 ? static_cast<double>(cc[i]) / pc[i] : 0.0;
-    h.node = static_cast<std::uint32_t>(nodes_.size());
-    h.first_cell = h.node + 1;
-    Node hn;
-    hn.kind = Kind::Hemi;
-    hn.parent = ray.tally;
-    hn.pending = static_cast<std::int64_t>(m);
-    hn.hemi = static_cast<std::uint32_t>(hemis_.size());
+    const auto node = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.resize(nodes_.size() + 1 + m);
+    hemis_.emplace_back();
+    make_hemi(ray, hit, children, k, m, node, static_cast<std::uint32_t>(hemis_.size() - 1));
     ++nodes_[ray.tally].pending;
-    nodes_.push_back(hn);
-    for (std::size_t j = 0; j < m; ++j) {
-      Node cn;
-      cn.kind = Kind::Cell;
-      cn.parent = h.node;
-      cn.pending = trace_ ? 0 : 1; // in trace mode the sample's own node counts
-      nodes_.push_back(cn);
-    }
-    for (std::size_t j = 0; j < m; ++j) {
-      std::uint32_t cell = h.first_cell + static_cast<std::uint32_t>(j);
-      children[k + j].tally = trace_ ? ray_node(cell, rec) : cell;
-      children[k + j].cell = 0;
-    }
-    hemis_.push_back(h);
+    if (trace_) // each sample gets a traced node under its cell
+      for (std::size_t j = 0; j < m; ++j)
+        children[k + j].tally = ray_node(children[k + j].tally, rec);
     k += m;
   }
   --nodes_[ray.tally].pending;
   settle(ray.tally);
+}
+
+void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
+                             rc_ray* children, const std::uint32_t* off, const std::uint32_t* count,
+                             std::size_t n) {
+  if (trace_) {
+    for (std::size_t i = 0; i < n; ++i)
+      shaded(rays[i], hits[i], totals[i], children + off[i], count[i]);
+    return;
+  }
+  new_nodes_.resize(n);
+  new_hemis_.resize(n);
+  plain_.resize(n);
+  // Each ray's hemispheres and the nodes they need, then their places in serial order.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      std::uint32_t nodes = 0, hemis = 0, plain = 0;
+      for (std::size_t k = 0; k < count[i];) {
+        const std::size_t m = run_length(children + off[i], k, count[i]);
+        if (m == 0) {
+          ++plain;
+          ++k;
+        } else {
+          nodes += static_cast<std::uint32_t>(1 + m);
+          ++hemis;
+          k += m;
+        }
+      }
+      new_nodes_[i] = nodes;
+      new_hemis_[i] = hemis;
+      plain_[i] = plain;
+    }
+  });
+  const auto node0 = static_cast<std::uint32_t>(nodes_.size());
+  const auto hemi0 = static_cast<std::uint32_t>(hemis_.size());
+  std::uint32_t tn = 0, th = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t a = new_nodes_[i], b = new_hemis_[i];
+    new_nodes_[i] = tn;
+    new_hemis_[i] = th;
+    tn += a;
+    th += b;
+  }
+  nodes_.resize(nodes_.size() + tn);
+  hemis_.resize(hemis_.size() + th);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      std::uint32_t node = node0 + new_nodes_[i], hemi = hemi0 + new_hemis_[i];
+      rc_ray* ch = children + off[i];
+      for (std::size_t k = 0; k < count[i];) {
+        const std::size_t m = run_length(ch, k, count[i]);
+        if (m == 0) {
+          ++k;
+          continue;
+        }
+        make_hemi(rays[i], hits[i], ch, k, m, node, hemi++);
+        node += static_cast<std::uint32_t>(1 + m);
+        k += m;
+      }
+    }
+  });
+  // In ray order, as shaded() would: the sums, the pending counts, the settling.
+  for (std::size_t i = 0; i < n; ++i) {
+    const rc_ray& ray = rays[i];
+    add(ray.tally, totals[i], ray.flags & RC_RAY_MIRRORED);
+    const std::uint32_t hemis = (i + 1 < n ? new_hemis_[i + 1] : th) - new_hemis_[i];
+    // A plain child keeps its parent's tally (the kernel copies it), as does a hemisphere.
+    nodes_[ray.tally].pending += static_cast<std::int64_t>(plain_[i]) + hemis - 1;
+    settle(ray.tally);
+  }
 }
 
 void TallyTree::supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren) {

@@ -57,6 +57,14 @@ public:
               std::size_t nchildren, const TracedShadow* shadows = nullptr,
               std::size_t nshadows = 0);
 
+  // The same for rays [0, n) of a slice, in order, outside trace mode: ray i's children are
+  // children[off[i], off[i] + count[i]). The hemispheres' nodes are made on every core (their
+  // places follow from counts, so they are those the serial order gives); sums and settling
+  // stay in ray order.
+  void shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
+                    rc_ray* children, const std::uint32_t* off, const std::uint32_t* count,
+                    std::size_t n);
+
   // Super-sample children of request `r` (their cell field names the division).
   void supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren);
 
@@ -90,6 +98,14 @@ private:
   };
 
   void add(std::uint32_t node, const rc_float4& c, bool mirrored);
+  // The hemisphere whose first samples begin at children[k] (m of them) of `ray`: its node at
+  // `node`, its cells after it, its record at hemis_[hemi]; the samples point at their cells.
+  void make_hemi(const rc_ray& ray, const rc_hit& hit, rc_ray* children, std::size_t k,
+                 std::size_t m, std::uint32_t node, std::uint32_t hemi);
+  // The number of a hemisphere's first samples from children[k] on (0: not a sample).
+  static std::size_t run_length(const rc_ray* children, std::size_t k, std::size_t nchildren);
+  // Per slice, kept: each ray's new nodes, hemispheres and plain children.
+  std::vector<std::uint32_t> new_nodes_, new_hemis_, plain_;
   // Trace mode: a node of its own for a child ray under `parent`, recorded under `rec`.
   std::uint32_t ray_node(std::uint32_t parent, std::uint32_t rec);
   void settle(std::uint32_t node);
