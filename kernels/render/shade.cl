@@ -246,4 +246,26 @@ kernel void rc_accumulate(global const float4* immediate, global const uint* sha
   total[i] = (float4)(sum, 0.0f);
 }
 
+/* Where the device is not the host's memory: each ray's records from its fixed slots into
+ * their packed places (offsets from the counts), so only the records cross to the host, not
+ * every slot. Rays whose records did not fit (top bit of their count) are shaded again. */
+kernel void rc_pack(global const rc_shadow* slot_shadows, global const rc_ray* slot_spawned,
+                    global const uint* nshadow, global const uint* nspawn,
+                    global const uint* shadow_offset, global const uint* spawn_offset, uint n,
+                    uint cap_shadow, uint cap_spawn, uint with_shadows, global rc_shadow* shadows,
+                    global rc_ray* spawned) {
+  uint i = get_global_id(0);
+  if (i >= n || (nshadow[i] & 0x80000000u)) return;
+  if (with_shadows) {
+    global const rc_shadow* from = slot_shadows + (ulong)i * cap_shadow;
+    global rc_shadow* to = shadows + shadow_offset[i];
+    for (uint k = 0; k < nshadow[i]; ++k)
+      to[k] = from[k];
+  }
+  global const rc_ray* from = slot_spawned + (ulong)i * cap_spawn;
+  global rc_ray* to = spawned + spawn_offset[i];
+  for (uint k = 0; k < nspawn[i]; ++k)
+    to[k] = from[k];
+}
+
 #include "render/shadow_step.cl"

@@ -47,9 +47,9 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
     : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
       program(built(prof, c, shade_program(cs, st))), shade(program.kernel("rc_shade")),
       accumulate(program.kernel("rc_accumulate")), shadow_step(program.kernel("rc_shadow_step")),
-      surfaces(upload(c, cs.surfaces)), materials(upload(c, cs.materials)),
-      args(upload(c, cs.args)), params(c, sizeof(rc_params)), patterns(upload(c, cs.patterns)),
-      centre(geom.centre()) {
+      pack(program.kernel("rc_pack")), surfaces(upload(c, cs.surfaces)),
+      materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
+      patterns(upload(c, cs.patterns)), centre(geom.centre()) {
   amb_blocked.update(c, std::vector<std::uint32_t>(4, 0u), 0);
   if (st.ambient_list != RenderSettings::AmbientList::None) {
     mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,

@@ -47,7 +47,7 @@ struct Renderer::Impl {
   CompiledScene cs;
   PhaseProfile prof; // before the program: its lifetime includes building it
   device::Program program;
-  device::Kernel shade, accumulate, shadow_step;
+  device::Kernel shade, accumulate, shadow_step, pack;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
   device::GrowingBuffer amb_records, amb_nodes, amb_blocked;
   Vec3d centre;

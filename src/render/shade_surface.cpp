@@ -148,19 +148,25 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     ctx.finish();
     w1 = std::chrono::steady_clock::now();
   }
-  // The counts and this slice's slots (not the pool buffers whole, both ways), read in one
-  // wait: a small wave's time is mostly the latency of its transfers.
+  // The counts (and on PoCL this slice's slots, not the pool buffers whole) in one wait: a
+  // small wave's time is mostly the latency of its transfers.
   ShadeScratch& x = shade_scratch;
   std::vector<std::uint32_t>&shadow_off = x.shadow_off, &spawn_off = x.spawn_off;
   shadow_off.resize(n);
   spawn_off.resize(n);
   bnshadow.read_later(shadow_off.data(), n * 4);
   bnspawn.read_later(spawn_off.data(), n * 4);
-  const auto* ssh = throwaway ? nullptr
-                              : static_cast<const rc_shadow*>(
-                                    bslot_sh.peek_later(n * csh * sizeof(rc_shadow), peek_sh));
-  const auto* ssp =
-      static_cast<const rc_ray*>(bslot_sp.peek_later(n * csp * sizeof(rc_ray), peek_sp));
+  // Where the host reads the slots in place (PoCL) it packs them; elsewhere rc_pack packs them
+  // on the device and only the records are read back (the slots are mostly room).
+  const bool on_device = !bslot_sp.zero_copy();
+  const rc_shadow* ssh = nullptr;
+  const rc_ray* ssp = nullptr;
+  if (!on_device) {
+    if (!throwaway)
+      ssh =
+          static_cast<const rc_shadow*>(bslot_sh.peek_later(n * csh * sizeof(rc_shadow), peek_sh));
+    ssp = static_cast<const rc_ray*>(bslot_sp.peek_later(n * csp * sizeof(rc_ray), peek_sp));
+  }
   ctx.finish();
   if (prof.waves()) {
     const auto w2 = std::chrono::steady_clock::now();
@@ -185,7 +191,28 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   const std::size_t first_child = next.size();
   next.resize(first_child + nspawn);
   rc_ray* children = next.data() + first_child;
-  {
+  if (on_device) {
+    device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
+    device::Buffer& bpoff = scratch(kSpawnOff, spawn_off);
+    device::Buffer& bsh = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
+    device::Buffer& bsp = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
+    pack.arg(0, bslot_sh)
+        .arg(1, bslot_sp)
+        .arg(2, bnshadow)
+        .arg(3, bnspawn)
+        .arg(4, bsoff)
+        .arg(5, bpoff)
+        .arg(6, un)
+        .arg(7, csh)
+        .arg(8, csp)
+        .arg(9, throwaway ? 0u : 1u)
+        .arg(10, bsh)
+        .arg(11, bsp);
+    ctx.run(pack, n);
+    if (!shadows.empty()) bsh.read_later(shadows.data(), shadows.size() * sizeof(rc_shadow));
+    if (nspawn) bsp.read_later(children, std::size_t{nspawn} * sizeof(rc_ray));
+    ctx.finish();
+  } else {
     std::vector<char>& later = x.later; // shaded again below
     later.assign(n, 0);
     for (std::uint32_t i : over)
