@@ -1,5 +1,6 @@
 #include "radcl/device/buffer.h"
 
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <utility>
@@ -11,6 +12,11 @@
 namespace radcl::device {
 namespace {
 constexpr std::size_t kAlign = 4096; // page alignment lets the runtime use the memory directly
+std::atomic<std::size_t> bytes_up{0}, bytes_down{0};
+} // namespace
+
+Transfers transfers() {
+  return {bytes_up.load(), bytes_down.load()};
 }
 
 Buffer::Buffer(Context& ctx, std::size_t bytes) : ctx_(&ctx), bytes_(bytes) {
@@ -82,6 +88,7 @@ void Buffer::write(const void* src, std::size_t bytes, std::size_t offset) {
   } else {
     // Without waiting: the queue is in order, so later commands see the data, and the copy
     // the transfer reads from lives until the queue next drains.
+    bytes_up += bytes;
     const void* staged = ctx_->stage(src, bytes);
     RADCL_CL(clEnqueueWriteBuffer(ctx_->queue(), mem_, CL_FALSE, offset, bytes, staged, 0, nullptr,
                                   nullptr));
@@ -118,6 +125,7 @@ void Buffer::read_later(void* dst, std::size_t bytes, std::size_t offset) const 
     read(dst, bytes, offset);
     return;
   }
+  bytes_down += bytes;
   if (void* p = ctx_->pinned(bytes)) { // into pinned room, copied to dst when the queue drains
     RADCL_CL(
         clEnqueueReadBuffer(ctx_->queue(), mem_, CL_FALSE, offset, bytes, p, 0, nullptr, nullptr));
@@ -139,6 +147,7 @@ void Buffer::read(void* dst, std::size_t bytes, std::size_t offset) const {
     read_later(dst, bytes, offset); // a small one through pinned room: shorter than a pageable read
     ctx_->finish();
   } else {
+    bytes_down += bytes;
     RADCL_CL(
         clEnqueueReadBuffer(ctx_->queue(), mem_, CL_TRUE, offset, bytes, dst, 0, nullptr, nullptr));
     ctx_->drained(); // a blocking read in an in-order queue waited for everything before it

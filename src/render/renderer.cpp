@@ -41,6 +41,10 @@ Renderer::Impl::~Impl() {
     host += v.capacity() * sizeof(rc_hit);
   std::fprintf(stderr, "profile: scratch      %9.1f MB device buffers, %.1f MB queues\n",
                static_cast<double>(dev) / 1e6, static_cast<double>(host) / 1e6);
+  const device::Transfers t = device::transfers();
+  if (t.up + t.down)
+    std::fprintf(stderr, "profile: transfers    %9.1f MB to the device, %.1f MB back\n",
+                 static_cast<double>(t.up) / 1e6, static_cast<double>(t.down) / 1e6);
 }
 
 Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)

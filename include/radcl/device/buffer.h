@@ -13,6 +13,13 @@ namespace radcl::device {
 
 class Context;
 
+// Bytes moved between host and device memory since the process began (transfers only: a
+// buffer the host reads in place moves nothing), for RADCL_PROFILE.
+struct Transfers {
+  std::size_t up = 0, down = 0;
+};
+Transfers transfers();
+
 class Buffer {
 public:
   Buffer() = default;
