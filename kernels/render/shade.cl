@@ -221,39 +221,40 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
 }
 
 /* Per ray of the wave: its immediate contribution plus its unblocked shadow contributions and
- * direct estimates, in a fixed order. The host sends each shadow request as one float4 (rgb;
- * w < 0 for a traced shadow ray, else an -dt estimate's count of tested requests before it),
- * not the whole rc_shadow: the records were the bulk of a wave's transfers to a discrete GPU. */
+ * direct estimates, in a fixed order, read from the packed requests (traced ones carry their
+ * contribution on arrival); blocked[k] comes from the host's shadow steps. */
 kernel void rc_accumulate(global const float4* immediate, global const uint* shadow_offset,
-                          global const float4* contrib, global const uchar* blocked, uint n,
+                          global const rc_shadow* shadows, global const uchar* blocked, uint n,
                           uint nshadows, global float4* total) {
   uint i = get_global_id(0);
   if (i >= n) return;
   uint end = i + 1 < n ? shadow_offset[i + 1] : nshadows;
   float3 sum = immediate[i].xyz;
   for (uint k = shadow_offset[i]; k < end; ++k) {
-    float4 c = contrib[k];
-    if (c.w < 0.0f) {
-      if (!blocked[k]) sum += c.xyz;
+    float3 c = shadows[k].contrib.xyz;
+    if (shadows[k].source != RC_NONE) {
+      if (!blocked[k]) sum += c;
       continue;
     }
-    /* The estimate for untested samples (direct.cl), at the tested ones' hit ratio. */
-    uint nt = (uint)c.w, hits = 0;
+    /* The estimate for untested samples (direct.cl), at the tested ones' hit ratio: pad0 is
+     * the count of tested requests before it. */
+    uint nt = shadows[k].pad0, hits = 0;
     for (uint j = k - nt; j < k; ++j)
       hits += !blocked[j];
-    if (nt > 0u) sum += c.xyz * ((float)hits / (float)nt);
+    if (nt > 0u) sum += c * ((float)hits / (float)nt);
   }
   total[i] = (float4)(sum, 0.0f);
 }
 
-/* Where the device is not the host's memory: each ray's records from its fixed slots into
- * their packed places (offsets from the counts), so only the records cross to the host, not
- * every slot. Rays whose records did not fit (top bit of their count) are shaded again. */
+/* Each ray's records from its fixed slots into their packed places (offsets from the counts):
+ * the shadow requests always (they stay on the device for their steps and the sums), the
+ * children where the device is not the host's memory (only they cross to the host, not every
+ * slot). Rays whose records did not fit (top bit of their count) are shaded again. */
 kernel void rc_pack(global const rc_shadow* slot_shadows, global const rc_ray* slot_spawned,
                     global const uint* nshadow, global const uint* nspawn,
                     global const uint* shadow_offset, global const uint* spawn_offset, uint n,
-                    uint cap_shadow, uint cap_spawn, uint with_shadows, global rc_shadow* shadows,
-                    global rc_ray* spawned) {
+                    uint cap_shadow, uint cap_spawn, uint with_shadows, uint with_spawn,
+                    global rc_shadow* shadows, global rc_ray* spawned) {
   uint i = get_global_id(0);
   if (i >= n || (nshadow[i] & 0x80000000u)) return;
   if (with_shadows) {
@@ -262,10 +263,32 @@ kernel void rc_pack(global const rc_shadow* slot_shadows, global const rc_ray* s
     for (uint k = 0; k < nshadow[i]; ++k)
       to[k] = from[k];
   }
-  global const rc_ray* from = slot_spawned + (ulong)i * cap_spawn;
-  global rc_ray* to = spawned + spawn_offset[i];
-  for (uint k = 0; k < nspawn[i]; ++k)
-    to[k] = from[k];
+  if (with_spawn) {
+    global const rc_ray* from = slot_spawned + (ulong)i * cap_spawn;
+    global rc_ray* to = spawned + spawn_offset[i];
+    for (uint k = 0; k < nspawn[i]; ++k)
+      to[k] = from[k];
+  }
+}
+
+/* What the host needs of a shadow request to trace it: its origin (w: tmin) and direction, w
+ * its reach: the distance to a local source sample, INFINITY for a distant source (or one
+ * already bent), -1 for a -dt estimate record, which is no ray. */
+static void rc_shadow_view_of(const rc_shadow* s, global const rc_source* sources,
+                              global float4* view) {
+  float w = -1.0f;
+  if (s->source != RC_NONE)
+    w = sources[s->source].kind == RC_SRC_DISTANT || !isfinite(s->dir.w) ? INFINITY : s->dir.w;
+  view[0] = s->org;
+  view[1] = (float4)(s->dir.xyz, w);
+}
+
+kernel void rc_shadow_view(global const rc_shadow* shadows, uint n, global const rc_source* sources,
+                           global float4* view) {
+  uint i = get_global_id(0);
+  if (i >= n) return;
+  rc_shadow s = shadows[i];
+  rc_shadow_view_of(&s, sources, view + 2 * (ulong)i);
 }
 
 #include "render/shadow_step.cl"

@@ -176,16 +176,22 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   return (state & ~RC_SH_STATUS) | RC_SH_LATER | RC_SH_CONTINUE;
 }
 
-kernel void rc_shadow_step(global rc_shadow* shadows, global const rc_hit* hits, global uint* state,
+/* Step i of the rays still under way: the request at slots[i] (in place, in the packed
+ * requests), its hit hits[i]; a ray that goes on writes its new view (shade.cl's
+ * rc_shadow_view_of) at view[2i] for its next trace. */
+kernel void rc_shadow_step(global rc_shadow* shadows, global const uint* slots,
+                           global const rc_hit* hits, global uint* state, global float4* view,
                            uint n, RC_SCENE_PARAMS) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
-  rc_shadow s = shadows[i];
+  uint j = slots[i];
+  rc_shadow s = shadows[j];
   rc_hit h = hits[i];
   h.uv.z = s.dist0; /* T and Ts of patterns met on the way (patterns.cl) */
   h.uv.w = s.sdist0;
   uint st = rc_shadow_at(&S, &s, &h, state[i]);
-  shadows[i] = s;
+  shadows[j] = s;
   state[i] = st;
+  if ((st & RC_SH_STATUS) == RC_SH_CONTINUE) rc_shadow_view_of(&s, sources, view + 2 * (ulong)i);
 }

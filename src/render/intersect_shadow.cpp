@@ -12,35 +12,43 @@ namespace radcl::render {
 using namespace ambient;
 using namespace pipeline;
 
-void Renderer::Impl::trace_shadows(std::vector<rc_shadow>& shadows,
+void Renderer::Impl::trace_shadows(device::Buffer& shadows, std::size_t n,
                                    std::vector<std::uint8_t>& blocked) {
+  blocked.assign(n, 1);
+  if (n == 0) return;
+  // What Embree needs of each request, made on the device: 32 bytes cross, not the record.
+  device::Buffer& bview = scratch(kShadowView, n * sizeof(ShadowView));
+  shadow_view.arg(0, shadows).arg(1, static_cast<std::uint32_t>(n)).arg(2, sources).arg(3, bview);
+  ctx.run(shadow_view, n);
+  const auto* view =
+      static_cast<const ShadowView*>(bview.peek_later(n * sizeof(ShadowView), peek_view));
+  ctx.finish();
   constexpr std::size_t kChunk = 1u << 18;
-  blocked.assign(shadows.size(), 1);
-  for (std::size_t a = 0; a < shadows.size(); a += kChunk)
-    trace_shadow_chunk(shadows.data() + a, std::min(kChunk, shadows.size() - a),
-                       blocked.data() + a);
+  for (std::size_t a = 0; a < n; a += kChunk)
+    trace_shadow_chunk(shadows, view, a, std::min(kChunk, n - a), blocked.data());
 }
 
-void Renderer::Impl::trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::uint8_t* blocked) {
+void Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view,
+                                        std::size_t first, std::size_t n, std::uint8_t* blocked) {
   std::vector<std::uint32_t>& slot = shadow_slot;
-  std::vector<rc_shadow>& cur = shadow_cur;
+  std::vector<ShadowView>& cur = shadow_cur;
   slot.clear();
   cur.clear();
-  // Estimates and empty slots of the -dt selection (source RC_NONE) are not rays. Where there
-  // are none (a hit with two source samples or fewer writes no estimate), the chunk is copied
+  // Estimates and empty slots of the -dt selection (reach < 0) are not rays. Where there are
+  // none (a hit with two source samples or fewer writes no estimate), the chunk is copied
   // whole, on every core.
-  const bool all_rays =
-      std::none_of(shadows, shadows + n, [](const rc_shadow& q) { return q.source == RC_NONE; });
+  const ShadowView* v = view + first;
+  const bool all_rays = std::none_of(v, v + n, [](const ShadowView& q) { return q.dir.w < 0; });
   if (all_rays) {
     cur.resize(n);
-    parallel_copy(cur.data(), shadows, n * sizeof(rc_shadow));
+    parallel_copy(cur.data(), v, n * sizeof(ShadowView));
     slot.resize(n);
-    std::iota(slot.begin(), slot.end(), std::uint32_t{0});
+    std::iota(slot.begin(), slot.end(), static_cast<std::uint32_t>(first));
   } else {
     for (std::size_t i = 0; i < n; ++i)
-      if (shadows[i].source != RC_NONE) {
-        slot.push_back(static_cast<std::uint32_t>(i));
-        cur.push_back(shadows[i]);
+      if (v[i].dir.w >= 0) {
+        slot.push_back(static_cast<std::uint32_t>(first + i));
+        cur.push_back(v[i]);
       }
   }
   std::vector<std::uint32_t>& state = shadow_state;
@@ -56,15 +64,13 @@ void Renderer::Impl::trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::
     hits.resize(m);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const auto& range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        const rc_shadow& s = cur[i];
-        const rc_source& src = cs.sources.sources[s.source];
+        const ShadowView& s = cur[i];
         geometry::Ray ray;
         ray.org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
         ray.dir = {s.dir.x, s.dir.y, s.dir.z};
         ray.tmin = s.org.w;
         ray.free_origin = s.org.w > 0; // from an -I meter's point (rc_leave_org)
-        ray.tmax =
-            src.kind == RC_SRC_DISTANT || !std::isfinite(s.dir.w) ? 1e300 : s.dir.w * 1.001 + 1e-3;
+        ray.tmax = std::isfinite(s.dir.w) ? s.dir.w * 1.001 + 1e-3 : 1e300;
         hits[i] =
             to_device(ray, geom.intersect(ray.org, ray.dir, ray.tmin, ray.tmax, ray.free_origin));
       }
@@ -72,34 +78,39 @@ void Renderer::Impl::trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::
     stats.shadow += m;
     timed.start(Phase::ShadowStep);
 
-    device::Buffer& bcur = scratch(kStepRays, m * sizeof(rc_shadow));
-    write_rows(bcur, cur.data(), m * sizeof(rc_shadow));
+    // The step works on the requests in place: only the hits, the slots and the states cross.
+    device::Buffer& bslot = scratch(kStepSlots, slot);
     device::Buffer& bhits = scratch(kStepHits, m * sizeof(rc_hit));
     write_rows(bhits, hits.data(), m * sizeof(rc_hit));
     device::Buffer& bstate = scratch(kStepState, state);
+    device::Buffer& bnext = scratch(kStepView, m * sizeof(ShadowView));
     std::uint32_t um = static_cast<std::uint32_t>(m);
-    shadow_step.arg(0, bcur).arg(1, bhits).arg(2, bstate).arg(3, um);
-    set_scene_args(shadow_step, 4);
+    shadow_step.arg(0, shadows).arg(1, bslot).arg(2, bhits).arg(3, bstate).arg(4, bnext).arg(5, um);
+    set_scene_args(shadow_step, 6);
     ctx.run(shadow_step, m);
-    // Into place (no fresh, zeroed vectors); in one wait where they are transfers.
-    if (!bcur.zero_copy()) bcur.read_later(cur.data(), m * sizeof(rc_shadow));
     bstate.read_later(state.data(), m * sizeof(std::uint32_t));
     ctx.finish();
-    if (bcur.zero_copy()) read_rows(bcur, cur.data(), m * sizeof(rc_shadow));
 
     std::size_t k = 0;
     for (std::size_t i = 0; i < m; ++i) {
       std::uint32_t status = state[i] & 3u;
-      if (status == 1u) { // reached its source
-        shadows[slot[i]].contrib = cur[i].contrib;
+      if (status == 1u) // reached its source
         blocked[slot[i]] = 0;
-      } else if (status == 2u) { // goes on
-        cur[k] = cur[i];
+      else if (status == 2u) // goes on
+        ++k;
+    }
+    if (k == 0) break;
+    // The few that go on (through glass): their new origins and directions.
+    const auto* next =
+        static_cast<const ShadowView*>(bnext.peek(m * sizeof(ShadowView), peek_view_step));
+    k = 0;
+    for (std::size_t i = 0; i < m; ++i)
+      if ((state[i] & 3u) == 2u) {
+        cur[k] = next[i];
         state[k] = state[i];
         slot[k] = slot[i];
         ++k;
       }
-    }
     cur.resize(k);
     state.resize(k);
     slot.resize(k);

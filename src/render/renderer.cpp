@@ -51,9 +51,10 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
     : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
       program(built(prof, c, shade_program(cs, st))), shade(program.kernel("rc_shade")),
       accumulate(program.kernel("rc_accumulate")), shadow_step(program.kernel("rc_shadow_step")),
-      pack(program.kernel("rc_pack")), surfaces(upload(c, cs.surfaces)),
-      materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
-      patterns(upload(c, cs.patterns)), centre(geom.centre()) {
+      pack(program.kernel("rc_pack")), shadow_view(program.kernel("rc_shadow_view")),
+      surfaces(upload(c, cs.surfaces)), materials(upload(c, cs.materials)),
+      args(upload(c, cs.args)), params(c, sizeof(rc_params)), patterns(upload(c, cs.patterns)),
+      centre(geom.centre()) {
   amb_blocked.update(c, std::vector<std::uint32_t>(4, 0u), 0);
   if (st.ambient_list != RenderSettings::AmbientList::None) {
     mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
@@ -115,9 +116,11 @@ std::vector<float> Renderer::Impl::pretest(const CompiledSources& so,
   sources = upload(ctx, so.sources);
   verts = upload(ctx, so.verts);
   mirrors = upload(ctx, so.mirrors);
-  std::vector<rc_shadow> sh = rays;
   std::vector<std::uint8_t> blocked;
-  trace_shadows(sh, blocked);
+  device::Buffer& b = scratch(kShadows, rays);
+  trace_shadows(b, rays.size(), blocked);
+  std::vector<rc_shadow> sh(rays.size());
+  if (!sh.empty()) read_rows(b, sh.data(), sh.size() * sizeof(rc_shadow));
   std::vector<float> out(sh.size());
   for (std::size_t i = 0; i < sh.size(); ++i)
     out[i] = blocked[i] ? 0.0f : sh[i].contrib.x;

@@ -47,7 +47,7 @@ struct Renderer::Impl {
   CompiledScene cs;
   PhaseProfile prof; // before the program: its lifetime includes building it
   device::Program program;
-  device::Kernel shade, accumulate, shadow_step, pack;
+  device::Kernel shade, accumulate, shadow_step, pack, shadow_view;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
   device::GrowingBuffer amb_records, amb_nodes, amb_blocked;
   Vec3d centre;
@@ -177,18 +177,17 @@ struct Renderer::Impl {
   // Shades the rays `over` (slice indices) again, their records written into exact room, and
   // puts them in their places in the slice's packed records.
   void reshade(const rc_ray* rays, const rc_hit* hit, const std::vector<std::uint32_t>& over,
-               const std::vector<std::uint32_t>& nsh, const std::vector<std::uint32_t>& nsp,
-               const std::vector<std::uint32_t>& shadow_off,
-               const std::vector<std::uint32_t>& spawn_off, std::vector<rc_shadow>& shadows,
+               const std::vector<std::uint32_t>& nsp, const std::vector<std::uint32_t>& shadow_off,
+               const std::vector<std::uint32_t>& spawn_off, device::Buffer& shadows,
                rc_ray* children);
   // shade_slice's host-side vectors, kept from slice to slice: fresh ones of this size were
   // paged in and cleared by the kernel every time (8% of a run's CPU time on 2 cores).
   struct ShadeScratch {
-    std::vector<std::uint32_t> shadow_off, spawn_off, nsh, nsp, over;
+    std::vector<std::uint32_t> shadow_off, spawn_off, nsp, over;
     std::vector<char> later;
     std::vector<rc_shadow> shadows, requested;
     std::vector<std::uint8_t> blocked;
-    std::vector<rc_float4> contrib, total;
+    std::vector<rc_float4> total;
   } shade_scratch;
 
   // ---- Shadow rays (intersect_shadow.cpp) ----
@@ -199,13 +198,21 @@ struct Renderer::Impl {
   // back into `shadows`; `blocked` marks the blocked ones.
   // In chunks, so the host's per-ray scratch (Embree answers above all) stays in memory that is
   // reused rather than freshly mapped and cleared.
-  void trace_shadows(std::vector<rc_shadow>& shadows, std::vector<std::uint8_t>& blocked);
-  // Rays [shadows, shadows + n): contributions written back in place, blocked[i] cleared for
-  // each one that reached its source.
-  void trace_shadow_chunk(rc_shadow* shadows, std::size_t n, std::uint8_t* blocked);
+  // The packed requests [0, n) of `shadows` stay on the device: the host traces them from a view
+  // of their origins and directions (rc_shadow_view), the steps update them in place; blocked[k]
+  // says whether request k was blocked (estimates stay 1).
+  void trace_shadows(device::Buffer& shadows, std::size_t n, std::vector<std::uint8_t>& blocked);
+  // Requests [first, first + n): blocked[first + i] cleared for each one that reached its
+  // source.
+  struct ShadowView {
+    rc_float4 org, dir; // dir.w: reach (kernels' rc_shadow_view)
+  };
+  void trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view, std::size_t first,
+                          std::size_t n, std::uint8_t* blocked);
   // A step's rays, their answers, states and slots, kept from step to step.
-  std::vector<rc_shadow> shadow_cur;
+  std::vector<ShadowView> shadow_cur;
   std::vector<rc_hit> shadow_hits;
+  std::vector<char> peek_view, peek_view_step;
   std::vector<std::uint32_t> shadow_state, shadow_slot;
 
   // ---- The irradiance cache's passes (cache_passes.cpp; docs/cache-internals.md) ----

@@ -88,11 +88,10 @@ void Renderer::Impl::size_slots(std::span<const rc_ray> queue, const std::vector
 
 void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
                              const std::vector<std::uint32_t>& over,
-                             const std::vector<std::uint32_t>& nsh,
                              const std::vector<std::uint32_t>& nsp,
                              const std::vector<std::uint32_t>& shadow_off,
-                             const std::vector<std::uint32_t>& spawn_off,
-                             std::vector<rc_shadow>& shadows, rc_ray* children) {
+                             const std::vector<std::uint32_t>& spawn_off, device::Buffer& shadows,
+                             rc_ray* children) {
   std::size_t m = over.size();
   std::vector<rc_ray> r(m);
   std::vector<rc_hit> h(m);
@@ -100,28 +99,22 @@ void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
   for (std::size_t k = 0; k < m; ++k) {
     r[k] = rays[over[k]];
     h[k] = hit[over[k]];
-    soff[k] = nsh[over[k]];
+    soff[k] = shadow_off[over[k]]; // straight into their packed places
     poff[k] = nsp[over[k]];
   }
-  std::uint32_t tsh = prefix_sum(soff), tsp = prefix_sum(poff);
+  std::uint32_t tsp = prefix_sum(poff);
   device::Buffer& brays = scratch(kStepRays, r);
   device::Buffer& bhits = scratch(kStepHits, h);
   device::Buffer& bsoff = scratch(kSuperOff, soff);
   device::Buffer& bpoff = scratch(kSuperData, poff);
-  device::Buffer& bsh = scratch(kShadows, std::size_t{tsh} * sizeof(rc_shadow));
   device::Buffer& bsp = scratch(kSpawned, std::size_t{tsp} * sizeof(rc_ray));
   device::Buffer& bimm = scratch(kTotal, m * sizeof(rc_float4));
-  run_shade(ShadeLaunch{&brays, &bhits, &bsoff, &bpoff, &bsh, &bsp, &bimm}, m);
-  std::vector<rc_shadow> sh(tsh);
+  run_shade(ShadeLaunch{&brays, &bhits, &bsoff, &bpoff, &shadows, &bsp, &bimm}, m);
   std::vector<rc_ray> sp(tsp);
-  bsh.read_later(sh.data(), sh.size() * sizeof(rc_shadow));
   bsp.read_later(sp.data(), sp.size() * sizeof(rc_ray));
   ctx.finish();
-  for (std::size_t k = 0; k < m; ++k) {
-    if (!shadows.empty()) // empty: a thrown-away pass
-      std::copy_n(sh.data() + soff[k], nsh[over[k]], shadows.data() + shadow_off[over[k]]);
+  for (std::size_t k = 0; k < m; ++k)
     std::copy_n(sp.data() + poff[k], nsp[over[k]], children + spawn_off[over[k]]);
-  }
 }
 
 void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n,
@@ -159,14 +152,10 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   // Where the host reads the slots in place (PoCL) it packs them; elsewhere rc_pack packs them
   // on the device and only the records are read back (the slots are mostly room).
   const bool on_device = !bslot_sp.zero_copy();
-  const rc_shadow* ssh = nullptr;
-  const rc_ray* ssp = nullptr;
-  if (!on_device) {
-    if (!throwaway)
-      ssh =
-          static_cast<const rc_shadow*>(bslot_sh.peek_later(n * csh * sizeof(rc_shadow), peek_sh));
-    ssp = static_cast<const rc_ray*>(bslot_sp.peek_later(n * csp * sizeof(rc_ray), peek_sp));
-  }
+  const rc_ray* ssp =
+      on_device
+          ? nullptr
+          : static_cast<const rc_ray*>(bslot_sp.peek_later(n * csp * sizeof(rc_ray), peek_sp));
   ctx.finish();
   if (prof.waves()) {
     const auto w2 = std::chrono::steady_clock::now();
@@ -180,22 +169,20 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
       shadow_off[i] &= 0x7FFFFFFFu;
       over.push_back(static_cast<std::uint32_t>(i));
     }
-  x.nsh.assign(shadow_off.begin(), shadow_off.end());
   x.nsp.assign(spawn_off.begin(), spawn_off.end());
-  const std::vector<std::uint32_t>&nsh = x.nsh, &nsp = x.nsp;
+  const std::vector<std::uint32_t>& nsp = x.nsp;
   std::uint32_t nshadow = prefix_sum(shadow_off), nspawn = prefix_sum(spawn_off);
   // The children go straight to the next generation's queue; a thrown-away pass wants only
-  // them (they may miss too).
-  std::vector<rc_shadow>& shadows = x.shadows;
-  shadows.resize(throwaway ? 0 : nshadow);
+  // them (they may miss too). The shadow requests are packed on the device and stay there.
   const std::size_t first_child = next.size();
   next.resize(first_child + nspawn);
   rc_ray* children = next.data() + first_child;
-  if (on_device) {
-    device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
-    device::Buffer& bpoff = scratch(kSpawnOff, spawn_off);
-    device::Buffer& bsh = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
-    device::Buffer& bsp = scratch(kSpawned, std::size_t{nspawn} * sizeof(rc_ray));
+  device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
+  device::Buffer& bsh = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
+  {
+    device::Buffer& bpoff = scratch(kSpawnOff, on_device ? spawn_off.size() * 4 : 4);
+    if (on_device) bpoff.write(spawn_off.data(), spawn_off.size() * 4);
+    device::Buffer& bsp = scratch(kSpawned, std::size_t{on_device ? nspawn : 1} * sizeof(rc_ray));
     pack.arg(0, bslot_sh)
         .arg(1, bslot_sp)
         .arg(2, bnshadow)
@@ -206,55 +193,44 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
         .arg(7, csh)
         .arg(8, csp)
         .arg(9, throwaway ? 0u : 1u)
-        .arg(10, bsh)
-        .arg(11, bsp);
+        .arg(10, on_device ? 1u : 0u)
+        .arg(11, bsh)
+        .arg(12, bsp);
     ctx.run(pack, n);
-    if (!shadows.empty()) bsh.read_later(shadows.data(), shadows.size() * sizeof(rc_shadow));
-    if (nspawn) bsp.read_later(children, std::size_t{nspawn} * sizeof(rc_ray));
-    ctx.finish();
-  } else {
-    std::vector<char>& later = x.later; // shaded again below
-    later.assign(n, 0);
-    for (std::uint32_t i : over)
-      later[i] = 1;
-    for_rows(n, [&](std::size_t i) {
-      if (later[i]) return;
-      if (ssh) std::copy_n(ssh + i * csh, nsh[i], shadows.data() + shadow_off[i]);
-      std::copy_n(ssp + i * csp, nsp[i], children + spawn_off[i]);
-    });
+    if (on_device) {
+      if (nspawn) bsp.read_later(children, std::size_t{nspawn} * sizeof(rc_ray));
+      ctx.finish();
+    } else {
+      std::vector<char>& later = x.later; // shaded again below
+      later.assign(n, 0);
+      for (std::uint32_t i : over)
+        later[i] = 1;
+      for_rows(n, [&](std::size_t i) {
+        if (!later[i]) std::copy_n(ssp + i * csp, nsp[i], children + spawn_off[i]);
+      });
+    }
   }
-  if (!over.empty()) reshade(rays, hit, over, nsh, nsp, shadow_off, spawn_off, shadows, children);
+  if (!over.empty()) reshade(rays, hit, over, nsp, shadow_off, spawn_off, bsh, children);
   if (throwaway) {
     set_misses_aside(next, first_child);
     return;
   }
-  device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
-
-  std::vector<rc_shadow>& requested = x.requested;
-  requested.clear();
-  if (settings.trace == RenderSettings::Trace::RaysAndShadows) requested = shadows;
+  // -oT reports each request as made and as it arrived.
+  const bool traced_shadows = settings.trace == RenderSettings::Trace::RaysAndShadows;
+  std::vector<rc_shadow>&requested = x.requested, &shadows = x.shadows;
+  requested.resize(traced_shadows ? nshadow : 0);
+  if (!requested.empty()) read_rows(bsh, requested.data(), requested.size() * sizeof(rc_shadow));
   timed.stop();
   std::vector<std::uint8_t>& blocked = x.blocked;
-  trace_shadows(shadows, blocked);
+  trace_shadows(bsh, nshadow, blocked);
   timed.start(Phase::Accumulate);
-  // rc_accumulate's view of a request: its contribution, w < 0 for a traced ray, else the
-  // -dt estimate's count of tested requests before it.
-  device::Buffer& bcontrib = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_float4));
-  {
-    std::vector<rc_float4>& contrib = x.contrib;
-    contrib.resize(nshadow);
-    for_rows(nshadow, [&](std::size_t k) {
-      const rc_shadow& q = shadows[k];
-      contrib[k] = q.contrib;
-      contrib[k].w = q.source != RC_NONE ? -1.0f : static_cast<float>(q.pad0);
-    });
-    if (nshadow) bcontrib.write(contrib.data(), contrib.size() * sizeof(rc_float4));
-  }
+  shadows.resize(traced_shadows ? nshadow : 0);
+  if (!shadows.empty()) bsh.read_later(shadows.data(), shadows.size() * sizeof(rc_shadow));
   device::Buffer& bblocked = scratch(kBlocked, blocked);
   device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
   accumulate.arg(0, bimm)
       .arg(1, bsoff)
-      .arg(2, bcontrib)
+      .arg(2, bsh)
       .arg(3, bblocked)
       .arg(4, un)
       .arg(5, nshadow)
