@@ -1,5 +1,8 @@
 #include "radcl/device/context.h"
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -41,30 +44,50 @@ Context::~Context() {
 }
 
 namespace {
-// Transfers up to this size go through pinned memory: small ones are all latency, and a large
-// one would pay for the extra copy on the host.
-constexpr std::size_t kPinnedMax = std::size_t{1} << 20;
+// Transfers go through pinned memory, which the device reads and writes at the bus's speed
+// (pageable memory goes through the driver's own staging, a copy on one core): up to this much
+// of it in all, in blocks of at least this size.
+constexpr std::size_t kPinnedTotal = std::size_t{2} << 30;
 constexpr std::size_t kPinnedBlock = std::size_t{8} << 20;
+
+// Large copies on every core: a wave's transfers are hundreds of megabytes.
+void copy(void* to, const void* from, std::size_t bytes) {
+  constexpr std::size_t kPart = std::size_t{1} << 20;
+  if (bytes < 4 * kPart) {
+    std::memcpy(to, from, bytes);
+    return;
+  }
+  tbb::parallel_for(std::size_t{0}, (bytes + kPart - 1) / kPart, [&](std::size_t k) {
+    const std::size_t at = k * kPart;
+    std::memcpy(static_cast<char*>(to) + at, static_cast<const char*>(from) + at,
+                std::min(kPart, bytes - at));
+  });
+}
 } // namespace
 
 void* Context::pinned(std::size_t bytes) {
-  if (!use_pinned_ || bytes > kPinnedMax) return nullptr;
+  if (!use_pinned_) return nullptr;
   bytes = (bytes + 63) / 64 * 64;
   for (;; ++pin_block_) {
     if (pin_block_ == pinned_.size()) {
+      const std::size_t size = std::max(kPinnedBlock, bytes);
+      std::size_t held = 0;
+      for (const PinnedBlock& b : pinned_)
+        held += b.size;
+      if (held + size > kPinnedTotal) return nullptr; // from where the data lies
       cl_int st = CL_SUCCESS;
-      cl_mem m = clCreateBuffer(context_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, kPinnedBlock,
-                                nullptr, &st);
+      cl_mem m =
+          clCreateBuffer(context_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, size, nullptr, &st);
       void* h = nullptr;
       if (st == CL_SUCCESS) // blocking, but once per block for the whole run
-        h = clEnqueueMapBuffer(queue_, m, CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0, kPinnedBlock, 0,
-                               nullptr, nullptr, &st);
+        h = clEnqueueMapBuffer(queue_, m, CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0, size, 0, nullptr,
+                               nullptr, &st);
       if (st != CL_SUCCESS || !h) { // no pinned memory here: transfer from where data lies
         if (m) clReleaseMemObject(m);
         use_pinned_ = false;
         return nullptr;
       }
-      pinned_.push_back({m, static_cast<char*>(h), kPinnedBlock, 0});
+      pinned_.push_back({m, static_cast<char*>(h), size, 0});
     }
     PinnedBlock& b = pinned_[pin_block_];
     if (b.used + bytes <= b.size) {
@@ -108,7 +131,7 @@ void Context::finish() {
 
 const void* Context::stage(const void* src, std::size_t bytes) {
   if (void* p = pinned(bytes)) {
-    std::memcpy(p, src, bytes);
+    copy(p, src, bytes);
     return p;
   }
   std::vector<char> b;
@@ -123,7 +146,7 @@ const void* Context::stage(const void* src, std::size_t bytes) {
 
 void Context::drained() {
   for (const CopyBack& c : copy_back_)
-    std::memcpy(c.to, c.from, c.bytes);
+    copy(c.to, c.from, c.bytes);
   copy_back_.clear();
   for (PinnedBlock& b : pinned_)
     b.used = 0;
