@@ -1,5 +1,6 @@
 #include "radcl/render/tally_tree.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "radcl/rng.h"
@@ -157,7 +158,7 @@ void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& to
     k += m;
   }
   --nodes_[ray.tally].pending;
-  settle(ray.tally);
+  settle(ray.tally, requests_);
 }
 
 void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
@@ -219,15 +220,44 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
       }
     }
   });
-  // In ray order, as shaded() would: the sums, the pending counts, the settling.
-  for (std::size_t i = 0; i < n; ++i) {
-    const rc_ray& ray = rays[i];
-    add(ray.tally, totals[i], ray.flags & RC_RAY_MIRRORED);
-    const std::uint32_t hemis = (i + 1 < n ? new_hemis_[i + 1] : th) - new_hemis_[i];
-    // A plain child keeps its parent's tally (the kernel copies it), as does a hemisphere.
-    nodes_[ray.tally].pending += static_cast<std::int64_t>(plain_[i]) + hemis - 1;
-    settle(ray.tally);
+  // In ray order, as shaded() would: the sums, the pending counts, the settling. Rays of
+  // different primaries touch different trees, so where the slice runs in primary order (a
+  // generation does; super-samples appended after it break the order) runs of whole primaries
+  // go on every core, each keeping its rays' order and its own super-sample requests, which
+  // are then joined in slice order: the serial order's result.
+  const auto finish = [&](std::size_t a, std::size_t b, std::vector<SuperRequest>& req) {
+    for (std::size_t i = a; i < b; ++i) {
+      const rc_ray& ray = rays[i];
+      add(ray.tally, totals[i], ray.flags & RC_RAY_MIRRORED);
+      const std::uint32_t hemis = (i + 1 < n ? new_hemis_[i + 1] : th) - new_hemis_[i];
+      // A plain child keeps its parent's tally (the kernel copies it), as does a hemisphere.
+      nodes_[ray.tally].pending += static_cast<std::int64_t>(plain_[i]) + hemis - 1;
+      settle(ray.tally, req);
+    }
+  };
+  constexpr std::size_t kRun = 4096;
+  const bool ordered = std::is_sorted(
+      rays, rays + n, [](const rc_ray& a, const rc_ray& b) { return a.primary < b.primary; });
+  if (!ordered || n < 2 * kRun) {
+    finish(0, n, requests_);
+    return;
   }
+  std::vector<std::size_t> cut{0};
+  for (std::size_t at = kRun; at < n; at += kRun) {
+    std::size_t c = std::max(at, cut.back() + 1);
+    while (c < n && rays[c].primary == rays[c - 1].primary)
+      ++c;
+    if (c >= n) break;
+    cut.push_back(c);
+    at = c;
+  }
+  cut.push_back(n);
+  std::vector<std::vector<SuperRequest>> req(cut.size() - 1);
+  tbb::parallel_for(std::size_t{0}, req.size(),
+                    [&](std::size_t r) { finish(cut[r], cut[r + 1], req[r]); });
+  for (auto& q : req)
+    for (auto& x : q)
+      requests_.push_back(std::move(x));
 }
 
 void TallyTree::supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren) {
@@ -250,7 +280,7 @@ void TallyTree::supersampled(const SuperRequest& r, rc_ray* children, std::size_
   }
   // The placeholder that kept the hemisphere open while the samples were asked for.
   nodes_[h.node].pending += cells - 1;
-  settle(h.node);
+  settle(h.node, requests_);
 }
 
 // Radiance's ambsupersamp: the budget spread over the divisions in proportion to the
@@ -329,7 +359,7 @@ std::vector<std::uint32_t> TallyTree::allocate(const Hemi& h) const {
   return counts;
 }
 
-void TallyTree::settle(std::uint32_t id) {
+void TallyTree::settle(std::uint32_t id, std::vector<SuperRequest>& requests) {
   for (;;) {
     Node& n = nodes_[id];
     if (n.pending != 0 || n.kind == Kind::Primary) return; // waiting, or a finished primary
@@ -357,7 +387,7 @@ void TallyTree::settle(std::uint32_t id) {
         any = any || c > 0;
       if (any) {
         nodes_[id].pending = 1;
-        requests_.push_back(SuperRequest{n.hemi, h.ray, h.hit, h.which, std::move(counts)});
+        requests.push_back(SuperRequest{n.hemi, h.ray, h.hit, h.which, std::move(counts)});
         return;
       }
     }

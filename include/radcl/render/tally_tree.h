@@ -108,7 +108,8 @@ private:
   std::vector<std::uint32_t> new_nodes_, new_hemis_, plain_;
   // Trace mode: a node of its own for a child ray under `parent`, recorded under `rec`.
   std::uint32_t ray_node(std::uint32_t parent, std::uint32_t rec);
-  void settle(std::uint32_t node);
+  // Settles `node` up its tree; super-sample requests it makes go to `requests`.
+  void settle(std::uint32_t node, std::vector<SuperRequest>& requests);
   std::vector<std::uint32_t> allocate(const Hemi& h) const;
 
   std::vector<Node> nodes_;
