@@ -26,4 +26,4 @@ done
 one "gpu waves" RADCL_DEVICE=nvidia RADCL_PROFILE=waves 2>&1 | tail -25
 one "pocl" RADCL_DEVICE=pocl 2>&1
 echo "== embree"
-(cd "$scenes" && "$RADCL_BIN/bench_embree_rays" office_clear.oct "$w/p2all.pts" 400 3 2>&1 | tail -20)
+(cd "$scenes" && "$RADCL_BIN/bench_embree_rays" office_clear.oct office_grid.pts 2>&1 | tail -20)
