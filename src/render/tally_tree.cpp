@@ -21,7 +21,7 @@ constexpr double kFtiny = 1e-6;
 } // namespace
 
 void TallyTree::reset(std::size_t primaries, std::uint32_t seed, bool trace) {
-  nodes_.assign(primaries, Node{});
+  nodes_.assign(primaries, fresh_node(Kind::Primary, RC_NONE, 0));
   hemis_.clear();
   requests_.clear();
   traced_.clear();
@@ -38,10 +38,7 @@ void TallyTree::reset(std::size_t primaries, std::uint32_t seed, bool trace) {
 }
 
 std::uint32_t TallyTree::ray_node(std::uint32_t parent, std::uint32_t rec) {
-  Node n;
-  n.kind = Kind::Ray;
-  n.parent = parent;
-  n.pending = 1;
+  Node n = fresh_node(Kind::Ray, parent, 1);
   n.traced = static_cast<std::uint32_t>(traced_.size());
   std::uint32_t id = static_cast<std::uint32_t>(nodes_.size());
   traced_.emplace_back();
@@ -104,17 +101,12 @@ void TallyTree::make_hemi(const rc_ray& ray, const rc_hit& hit, rc_ray* children
   h.node = node;
   h.first_cell = node + 1;
   Node& hn = nodes_[node];
-  hn = Node{};
-  hn.kind = Kind::Hemi;
-  hn.parent = ray.tally;
-  hn.pending = static_cast<std::int64_t>(m);
+  hn = fresh_node(Kind::Hemi, ray.tally, static_cast<std::int64_t>(m));
   hn.hemi = hemi;
   for (std::size_t j = 0; j < m; ++j) {
     Node& cn = nodes_[h.first_cell + j];
-    cn = Node{};
-    cn.kind = Kind::Cell;
-    cn.parent = node;
-    cn.pending = trace_ ? 0 : 1; // in trace mode the sample's own node counts
+    // In trace mode the sample's own node counts.
+    cn = fresh_node(Kind::Cell, node, trace_ ? 0 : 1);
     children[k + j].tally = h.first_cell + static_cast<std::uint32_t>(j);
     children[k + j].cell = 0;
   }

@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "radcl/device_types.h"
@@ -80,21 +82,35 @@ public:
 
 private:
   enum class Kind : std::uint8_t { Primary, Ray, Cell, Hemi };
+  // Nodes and hemispheres are made by the million per batch, in room grown without clearing it
+  // first (Uninit): every field is written where one is made (fresh_node, make_hemi).
   struct Node {
-    Kind kind = Kind::Primary;
-    std::uint32_t traced = RC_NONE; // trace mode: the ray's record
-    std::uint32_t parent = RC_NONE; // a cell's hemisphere, a hemisphere's or ray's tally
-    std::int64_t pending = 0;       // rays in flight + hemispheres below not yet resolved
-    Vec3d sum{}, msum{};            // contributions; the part below the mirror reflection
-    std::uint32_t count = 1;        // a cell's samples
-    std::uint32_t hemi = RC_NONE;   // a hemisphere node's record
+    Kind kind;
+    std::uint32_t traced; // trace mode: the ray's record
+    std::uint32_t parent; // a cell's hemisphere, a hemisphere's or ray's tally
+    std::int64_t pending; // rays in flight + hemispheres below not yet resolved
+    Vec3d sum, msum;      // contributions; the part below the mirror reflection
+    std::uint32_t count;  // a cell's samples
+    std::uint32_t hemi;   // a hemisphere node's record
   };
+  static Node fresh_node(Kind kind, std::uint32_t parent, std::int64_t pending) {
+    return Node{kind, RC_NONE, parent, pending, Vec3d{}, Vec3d{}, 1, RC_NONE};
+  }
   struct Hemi {
     rc_ray ray;
     rc_hit hit;
     Vec3d acoef; // Radiance's hp->acoef: the ambient coefficient over ns * ns
     std::uint32_t node, first_cell, ns, budget, which;
-    bool second = false; // the super-sample decision has been made
+    bool second; // the super-sample decision has been made
+  };
+  template <class T> struct Uninit : std::allocator<T> {
+    template <class U> struct rebind { using other = Uninit<U>; };
+    Uninit() = default;
+    template <class U> Uninit(const Uninit<U>&) noexcept {}
+    template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+    template <class U, class... A> void construct(U* p, A&&... a) {
+      ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+    }
   };
 
   void add(std::uint32_t node, const rc_float4& c, bool mirrored);
@@ -112,8 +128,8 @@ private:
   void settle(std::uint32_t node, std::vector<SuperRequest>& requests);
   std::vector<std::uint32_t> allocate(const Hemi& h) const;
 
-  std::vector<Node> nodes_;
-  std::vector<Hemi> hemis_;
+  std::vector<Node, Uninit<Node>> nodes_;
+  std::vector<Hemi, Uninit<Hemi>> hemis_;
   std::vector<SuperRequest> requests_;
   std::vector<Traced> traced_;
   bool trace_ = false;
