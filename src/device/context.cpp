@@ -1,7 +1,5 @@
 #include "radcl/device/context.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -9,6 +7,7 @@
 #include <string>
 
 #include "radcl/device/cl.h"
+#include "radcl/device/host_copy.h"
 #include "radcl/device/program.h"
 
 namespace radcl::device {
@@ -50,19 +49,6 @@ namespace {
 constexpr std::size_t kPinnedTotal = std::size_t{2} << 30;
 constexpr std::size_t kPinnedBlock = std::size_t{8} << 20;
 
-// Large copies on every core: a wave's transfers are hundreds of megabytes.
-void copy(void* to, const void* from, std::size_t bytes) {
-  constexpr std::size_t kPart = std::size_t{1} << 20;
-  if (bytes < 4 * kPart) {
-    std::memcpy(to, from, bytes);
-    return;
-  }
-  tbb::parallel_for(std::size_t{0}, (bytes + kPart - 1) / kPart, [&](std::size_t k) {
-    const std::size_t at = k * kPart;
-    std::memcpy(static_cast<char*>(to) + at, static_cast<const char*>(from) + at,
-                std::min(kPart, bytes - at));
-  });
-}
 } // namespace
 
 void* Context::pinned(std::size_t bytes) {
@@ -131,7 +117,7 @@ void Context::finish() {
 
 const void* Context::stage(const void* src, std::size_t bytes) {
   if (void* p = pinned(bytes)) {
-    copy(p, src, bytes);
+    parallel_copy(p, src, bytes);
     return p;
   }
   std::vector<char> b;
@@ -146,7 +132,7 @@ const void* Context::stage(const void* src, std::size_t bytes) {
 
 void Context::drained() {
   for (const CopyBack& c : copy_back_)
-    copy(c.to, c.from, c.bytes);
+    parallel_copy(c.to, c.from, c.bytes);
   copy_back_.clear();
   for (PinnedBlock& b : pinned_)
     b.used = 0;

@@ -10,6 +10,7 @@
 
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
+#include "radcl/device/host_copy.h"
 #include "radcl/device_types.h"
 #include "radcl/render/renderer.h"
 
@@ -92,20 +93,7 @@ template <class F> void for_rows(std::size_t n, const F& f) {
   });
 }
 
-// memcpy with every core for large copies: a chunk's rays and hits copied on one thread held
-// the other cores idle (2 cores: 2 GB of such copies in a run of 11 M rays).
-inline void parallel_copy(void* dst, const void* src, std::size_t bytes) {
-  constexpr std::size_t kBlock = std::size_t{1} << 18;
-  if (bytes < 4 * kBlock) {
-    std::memcpy(dst, src, bytes);
-    return;
-  }
-  tbb::parallel_for(std::size_t{0}, (bytes + kBlock - 1) / kBlock, [&](std::size_t k) {
-    const std::size_t at = k * kBlock;
-    std::memcpy(static_cast<char*>(dst) + at, static_cast<const char*>(src) + at,
-                std::min(kBlock, bytes - at));
-  });
-}
+using device::parallel_copy;
 
 // `bytes` from src into the start of `b`; where the device shares the host's memory, straight
 // into its allocation with every core.
