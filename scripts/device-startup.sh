@@ -12,3 +12,12 @@ for dev in nvidia pocl; do
       "$RADCL_BIN/rtrace" -h -I -ab 1 office_clear.oct 2>&1 >/dev/null | grep -E "wall|lifetime|build"
   done
 done
+# The same with the ICD loader given one driver's .icd file (it then opens only that driver):
+# what loading every registered driver costs.
+for f in "$OCL_ICD_VENDORS"/*.icd; do
+  for k in 1 2 3; do
+    echo "== only $(basename "$f") run $k"
+    echo "2 2 0.8 0 0 1" | OCL_ICD_VENDORS=$f RADCL_PROFILE=1 /usr/bin/time -f "%e s wall, %U s user, %S s sys" \
+      "$RADCL_BIN/rtrace" -h -I -ab 1 office_clear.oct 2>&1 >/dev/null | grep -E "wall|lifetime|build"
+  done
+done

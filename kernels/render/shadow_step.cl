@@ -178,10 +178,11 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
 
 /* Step i of the rays still under way: the request at slots[i] (in place, in the packed
  * requests), its hit hits[i]; a ray that goes on writes its new view (shade.cl's
- * rc_shadow_view_of) at view[2i] for its next trace. */
+ * rc_shadow_view_of) at view[2i] for its next trace, one that reaches its source clears
+ * blocked[slots[i]] (rc_accumulate reads it there, with no trip through the host). */
 kernel void rc_shadow_step(global rc_shadow* shadows, global const uint* slots,
                            global const rc_hit* hits, global uint* state, global float4* view,
-                           uint n, RC_SCENE_PARAMS) {
+                           global uchar* blocked, uint n, RC_SCENE_PARAMS) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
@@ -193,5 +194,6 @@ kernel void rc_shadow_step(global rc_shadow* shadows, global const uint* slots,
   uint st = rc_shadow_at(&S, &s, &h, state[i]);
   shadows[j] = s;
   state[i] = st;
+  if ((st & RC_SH_STATUS) == RC_SH_REACHED) blocked[j] = 0;
   if ((st & RC_SH_STATUS) == RC_SH_CONTINUE) rc_shadow_view_of(&s, sources, view + 2 * (ulong)i);
 }

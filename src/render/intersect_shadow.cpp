@@ -2,6 +2,7 @@
 // or is blocked.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 #include "pipeline_util.h"
@@ -12,24 +13,38 @@ namespace radcl::render {
 using namespace ambient;
 using namespace pipeline;
 
-void Renderer::Impl::trace_shadows(device::Buffer& shadows, std::size_t n,
-                                   std::vector<std::uint8_t>& blocked) {
-  blocked.assign(n, 1);
-  if (n == 0) return;
+const Renderer::Impl::ShadowView* Renderer::Impl::view_shadows_later(device::Buffer& shadows,
+                                                                     std::size_t n) {
   // What Embree needs of each request, made on the device: 32 bytes cross, not the record.
   device::Buffer& bview = scratch(kShadowView, n * sizeof(ShadowView));
   shadow_view.arg(0, shadows).arg(1, static_cast<std::uint32_t>(n)).arg(2, sources).arg(3, bview);
   ctx.run(shadow_view, n);
-  const auto* view =
-      static_cast<const ShadowView*>(bview.peek_later(n * sizeof(ShadowView), peek_view));
-  ctx.finish();
-  constexpr std::size_t kChunk = 1u << 18;
-  for (std::size_t a = 0; a < n; a += kChunk)
-    trace_shadow_chunk(shadows, view, a, std::min(kChunk, n - a), blocked.data());
+  return static_cast<const ShadowView*>(bview.peek_later(n * sizeof(ShadowView), peek_view));
 }
 
-void Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view,
-                                        std::size_t first, std::size_t n, std::uint8_t* blocked) {
+bool Renderer::Impl::trace_shadows(device::Buffer& shadows, std::size_t n,
+                                   std::vector<std::uint8_t>& blocked, const ShadowView* view,
+                                   const std::function<void()>& after_step) {
+  blocked.assign(n, 1);
+  if (n == 0) return false;
+  scratch(kBlocked, blocked); // the steps clear the reached ones' flags on the device too
+  if (!view) {
+    view = view_shadows_later(shadows, n);
+    ctx.finish();
+  }
+  constexpr std::size_t kChunk = 1u << 18;
+  bool done = false;
+  for (std::size_t a = 0; a < n; a += kChunk) {
+    const bool last = a + kChunk >= n;
+    done = trace_shadow_chunk(shadows, view, a, std::min(kChunk, n - a), blocked.data(),
+                              last ? after_step : std::function<void()>{});
+  }
+  return done;
+}
+
+bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view,
+                                        std::size_t first, std::size_t n, std::uint8_t* blocked,
+                                        const std::function<void()>& after_step) {
   std::vector<std::uint32_t>& slot = shadow_slot;
   std::vector<ShadowView>& cur = shadow_cur;
   slot.clear();
@@ -56,6 +71,7 @@ void Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
   // Radiance traces shadow rays on until their weight vanishes; a glass stack that needs
   // more steps than this contributes nothing measurable.
   constexpr int kMaxSteps = 64;
+  bool done = false; // after_step ran after the last step
   for (int step = 0; step < kMaxSteps && !cur.empty(); ++step) {
     std::size_t m = cur.size();
     Timed timed(prof, Phase::ShadowTrace);
@@ -85,11 +101,20 @@ void Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     device::Buffer& bstate = scratch(kStepState, state);
     device::Buffer& bnext = scratch(kStepView, m * sizeof(ShadowView));
     std::uint32_t um = static_cast<std::uint32_t>(m);
-    shadow_step.arg(0, shadows).arg(1, bslot).arg(2, bhits).arg(3, bstate).arg(4, bnext).arg(5, um);
-    set_scene_args(shadow_step, 6);
+    shadow_step.arg(0, shadows)
+        .arg(1, bslot)
+        .arg(2, bhits)
+        .arg(3, bstate)
+        .arg(4, bnext)
+        .arg(5, scratch(kBlocked, std::size_t{0}))
+        .arg(6, um);
+    set_scene_args(shadow_step, 7);
     ctx.run(shadow_step, m);
     bstate.read_later(state.data(), m * sizeof(std::uint32_t));
+    // The caller's next commands go in the same wait, in case this step is the last.
+    if (after_step) after_step();
     ctx.finish();
+    done = static_cast<bool>(after_step);
 
     std::size_t k = 0;
     for (std::size_t i = 0; i < m; ++i) {
@@ -114,7 +139,9 @@ void Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     cur.resize(k);
     state.resize(k);
     slot.resize(k);
+    done = false;
   }
+  return done;
 }
 
 } // namespace radcl::render

@@ -13,10 +13,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "radcl/ambient/cache.h"
@@ -162,6 +165,14 @@ struct Renderer::Impl {
   // same records; a good one makes re-shading rare and keeps the slots small).
   std::uint32_t cap_shadow = 16, cap_spawn = 2;
   static constexpr std::size_t kUncountedWave = 2048;
+  // Slices up to this many rays sum their shadow rays speculatively with each step (a GPU).
+  static constexpr std::size_t kSumAlongRays = std::size_t{1} << 16;
+  // The shadow views read with the children and the sums with the shadow steps, in one wait
+  // each (RADCL_FEWER_WAITS=0: each in a wait of its own, to measure what they save).
+  const bool fewer_waits = [] {
+    const char* e = std::getenv("RADCL_FEWER_WAITS");
+    return !(e && std::string(e) == "0");
+  }();
   std::vector<char> peek_sh, peek_sp; // host copies of the slots where the device is not the host
   // Slot sizes for a chunk: the counts of an even spread of its rays (at most 512 of them,
   // counted by rc_shade's count mode), enough room for about 98% of them.
@@ -201,14 +212,25 @@ struct Renderer::Impl {
   // The packed requests [0, n) of `shadows` stay on the device: the host traces them from a view
   // of their origins and directions (rc_shadow_view), the steps update them in place; blocked[k]
   // says whether request k was blocked (estimates stay 1).
-  void trace_shadows(device::Buffer& shadows, std::size_t n, std::vector<std::uint8_t>& blocked);
-  // Requests [first, first + n): blocked[first + i] cleared for each one that reached its
-  // source.
+  // `view`: the requests' views when the caller had them made (view_shadows_later, read in
+  // the same wait as its own transfers); null: made here.
   struct ShadowView {
     rc_float4 org, dir; // dir.w: reach (kernels' rc_shadow_view)
   };
-  void trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view, std::size_t first,
-                          std::size_t n, std::uint8_t* blocked);
+  // The device's kBlocked buffer holds the same flags as `blocked` once it returns.
+  // `after_step`: commands enqueued after each step of the last chunk, in that step's wait;
+  // true when they ran after the last step (so their results stand).
+  bool trace_shadows(device::Buffer& shadows, std::size_t n, std::vector<std::uint8_t>& blocked,
+                     const ShadowView* view = nullptr,
+                     const std::function<void()>& after_step = {});
+  // rc_shadow_view over requests [0, n) of `shadows`, enqueued; the views are there once the
+  // context finishes.
+  const ShadowView* view_shadows_later(device::Buffer& shadows, std::size_t n);
+  // Requests [first, first + n): blocked[first + i] cleared for each one that reached its
+  // source.
+  bool trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view, std::size_t first,
+                          std::size_t n, std::uint8_t* blocked,
+                          const std::function<void()>& after_step);
   // A step's rays, their answers, states and slots, kept from step to step.
   std::vector<ShadowView> shadow_cur;
   std::vector<rc_hit> shadow_hits;

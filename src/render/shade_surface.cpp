@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 
 #include "pipeline_util.h"
 #include "renderer_impl.h"
@@ -179,6 +180,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   rc_ray* children = next.data() + first_child;
   device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
   device::Buffer& bsh = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
+  const ShadowView* view = nullptr;
   {
     device::Buffer& bpoff = scratch(kSpawnOff, on_device ? spawn_off.size() * 4 : 4);
     if (on_device) bpoff.write(spawn_off.data(), spawn_off.size() * 4);
@@ -197,10 +199,15 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
         .arg(11, bsh)
         .arg(12, bsp);
     ctx.run(pack, n);
+    // The shadow rays' views come back in the same wait as the children, unless requests
+    // shaded again below still have to be written into their places.
+    if (fewer_waits && over.empty() && !throwaway && nshadow)
+      view = view_shadows_later(bsh, nshadow);
     if (on_device) {
       if (nspawn) bsp.read_later(children, std::size_t{nspawn} * sizeof(rc_ray));
       ctx.finish();
     } else {
+      if (view) ctx.finish();
       std::vector<char>& later = x.later; // shaded again below
       later.assign(n, 0);
       for (std::uint32_t i : over)
@@ -222,23 +229,31 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   if (!requested.empty()) read_rows(bsh, requested.data(), requested.size() * sizeof(rc_shadow));
   timed.stop();
   std::vector<std::uint8_t>& blocked = x.blocked;
-  trace_shadows(bsh, nshadow, blocked);
+  std::vector<rc_float4>& total = x.total;
+  total.resize(n);
+  device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
+  // The sums read the shadow rays' flags where the steps left them on the device.
+  const auto sum_up = [&] {
+    accumulate.arg(0, bimm)
+        .arg(1, bsoff)
+        .arg(2, bsh)
+        .arg(3, scratch(kBlocked, std::size_t{nshadow}))
+        .arg(4, un)
+        .arg(5, nshadow)
+        .arg(6, btotal);
+    ctx.run(accumulate, n);
+    btotal.read_later(total.data(), n * sizeof(rc_float4));
+  };
+  // On a GPU a small slice's time is the latency of its waits: the sums go along with every
+  // shadow step, in its wait, and stand if it was the last (wasted work otherwise, which is
+  // small for a slice this size).
+  const bool along = fewer_waits && !ctx.zero_copy() && n <= kSumAlongRays && !traced_shadows;
+  const bool summed = trace_shadows(
+      bsh, nshadow, blocked, view, along ? std::function<void()>(sum_up) : std::function<void()>{});
   timed.start(Phase::Accumulate);
   shadows.resize(traced_shadows ? nshadow : 0);
   if (!shadows.empty()) bsh.read_later(shadows.data(), shadows.size() * sizeof(rc_shadow));
-  device::Buffer& bblocked = scratch(kBlocked, blocked);
-  device::Buffer& btotal = scratch(kTotal, n * sizeof(rc_float4));
-  accumulate.arg(0, bimm)
-      .arg(1, bsoff)
-      .arg(2, bsh)
-      .arg(3, bblocked)
-      .arg(4, un)
-      .arg(5, nshadow)
-      .arg(6, btotal);
-  ctx.run(accumulate, n);
-  std::vector<rc_float4>& total = x.total;
-  total.resize(n);
-  btotal.read_later(total.data(), n * sizeof(rc_float4));
+  if (!summed) sum_up();
   ctx.finish();
   if (tree && settings.trace == RenderSettings::Trace::Off) {
     tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(), n);
