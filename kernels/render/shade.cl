@@ -291,4 +291,57 @@ kernel void rc_shadow_view(global const rc_shadow* shadows, uint n, global const
   rc_shadow_view_of(&s, sources, view + 2 * (ulong)i);
 }
 
+/* The same for a count the device holds: totals[0] (rc_offsets). */
+kernel void rc_shadow_view_counted(global const rc_shadow* shadows, global const uint* totals,
+                                   global const rc_source* sources, global float4* view) {
+  uint i = get_global_id(0);
+  if (i >= totals[0]) return;
+  rc_shadow s = shadows[i];
+  rc_shadow_view_of(&s, sources, view + 2 * (ulong)i);
+}
+
+/* The packed places of a small wave's records, for rc_pack without a trip through the host: the
+ * exclusive prefix sums of the counts by one work-group of RC_OFFSETS_GROUP items, each a run of
+ * rays, and the totals (totals[0] shadow requests, totals[1] children). A ray whose records did
+ * not fit (top bit of its shadow count) takes no room here: rc_pack skips it, and the host then
+ * places the wave's records itself. */
+#define RC_OFFSETS_GROUP 256
+kernel void rc_offsets(global const uint* nshadow, global const uint* nspawn, uint n,
+                       global uint* shadow_offset, global uint* spawn_offset, global uint* totals) {
+  local uint sh[RC_OFFSETS_GROUP], sp[RC_OFFSETS_GROUP];
+  uint t = get_local_id(0), per = (n + RC_OFFSETS_GROUP - 1) / RC_OFFSETS_GROUP;
+  uint a = min(n, t * per), b = min(n, a + per), ssh = 0, ssp = 0;
+  for (uint i = a; i < b; ++i)
+    if (!(nshadow[i] & 0x80000000u)) {
+      ssh += nshadow[i];
+      ssp += nspawn[i];
+    }
+  sh[t] = ssh;
+  sp[t] = ssp;
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (t == 0) {
+    uint x = 0, y = 0;
+    for (uint k = 0; k < RC_OFFSETS_GROUP; ++k) {
+      uint u = sh[k], v = sp[k];
+      sh[k] = x;
+      sp[k] = y;
+      x += u;
+      y += v;
+    }
+    totals[0] = x;
+    totals[1] = y;
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  ssh = sh[t];
+  ssp = sp[t];
+  for (uint i = a; i < b; ++i) {
+    shadow_offset[i] = ssh;
+    spawn_offset[i] = ssp;
+    if (!(nshadow[i] & 0x80000000u)) {
+      ssh += nshadow[i];
+      ssp += nspawn[i];
+    }
+  }
+}
+
 #include "render/shadow_step.cl"

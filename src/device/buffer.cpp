@@ -12,11 +12,15 @@
 namespace radcl::device {
 namespace {
 constexpr std::size_t kAlign = 4096; // page alignment lets the runtime use the memory directly
-std::atomic<std::size_t> bytes_up{0}, bytes_down{0};
+std::atomic<std::size_t> bytes_up{0}, bytes_down{0}, waits{0};
 } // namespace
 
 Transfers transfers() {
-  return {bytes_up.load(), bytes_down.load()};
+  return {bytes_up.load(), bytes_down.load(), waits.load()};
+}
+
+void note_wait() {
+  ++waits;
 }
 
 Buffer::Buffer(Context& ctx, std::size_t bytes) : ctx_(&ctx), bytes_(bytes) {
@@ -71,6 +75,7 @@ void* Buffer::map() {
   void* p = nullptr;
   RADCL_CL_CREATE(p, clEnqueueMapBuffer(ctx_->queue(), mem_, CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0,
                                         bytes_, 0, nullptr, nullptr, &radcl_status_));
+  note_wait();
   return p;
 }
 
@@ -150,6 +155,7 @@ void Buffer::read(void* dst, std::size_t bytes, std::size_t offset) const {
     bytes_down += bytes;
     RADCL_CL(
         clEnqueueReadBuffer(ctx_->queue(), mem_, CL_TRUE, offset, bytes, dst, 0, nullptr, nullptr));
+    note_wait();
     ctx_->drained(); // a blocking read in an in-order queue waited for everything before it
   }
 }

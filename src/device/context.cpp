@@ -6,6 +6,7 @@
 #include <mutex>
 #include <string>
 
+#include "radcl/device/buffer.h"
 #include "radcl/device/cl.h"
 #include "radcl/device/host_copy.h"
 #include "radcl/device/program.h"
@@ -111,6 +112,7 @@ void Context::run(Kernel& kernel, std::size_t items, std::size_t group) {
 
 void Context::finish() {
   RADCL_CL(clFinish(queue_));
+  note_wait();
   pending_ = false;
   drained();
 }

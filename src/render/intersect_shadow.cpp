@@ -111,8 +111,15 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     set_scene_args(shadow_step, 7);
     ctx.run(shadow_step, m);
     bstate.read_later(state.data(), m * sizeof(std::uint32_t));
-    // The caller's next commands go in the same wait, in case this step is the last.
+    // The caller's next commands go in the same wait, in case this step is the last; so do
+    // the new views of a step this small, in case some go on (each wait is a round trip on a
+    // GPU, where reading them after it would be another).
     if (after_step) after_step();
+    const bool views_along = after_step && m <= kSumAlongRays;
+    const ShadowView* next = nullptr;
+    if (views_along)
+      next =
+          static_cast<const ShadowView*>(bnext.peek_later(m * sizeof(ShadowView), peek_view_step));
     ctx.finish();
     done = static_cast<bool>(after_step);
 
@@ -126,8 +133,8 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     }
     if (k == 0) break;
     // The few that go on (through glass): their new origins and directions.
-    const auto* next =
-        static_cast<const ShadowView*>(bnext.peek(m * sizeof(ShadowView), peek_view_step));
+    if (!next)
+      next = static_cast<const ShadowView*>(bnext.peek(m * sizeof(ShadowView), peek_view_step));
     k = 0;
     for (std::size_t i = 0; i < m; ++i)
       if ((state[i] & 3u) == 2u) {

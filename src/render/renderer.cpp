@@ -45,6 +45,7 @@ Renderer::Impl::~Impl() {
   if (t.up + t.down)
     std::fprintf(stderr, "profile: transfers    %9.1f MB to the device, %.1f MB back\n",
                  static_cast<double>(t.up) / 1e6, static_cast<double>(t.down) / 1e6);
+  std::fprintf(stderr, "profile: waits        %9zu for the device\n", t.waits);
 }
 
 Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
@@ -52,9 +53,10 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
       program(built(prof, c, shade_program(cs, st))), shade(program.kernel("rc_shade")),
       accumulate(program.kernel("rc_accumulate")), shadow_step(program.kernel("rc_shadow_step")),
       pack(program.kernel("rc_pack")), shadow_view(program.kernel("rc_shadow_view")),
-      surfaces(upload(c, cs.surfaces)), materials(upload(c, cs.materials)),
-      args(upload(c, cs.args)), params(c, sizeof(rc_params)), patterns(upload(c, cs.patterns)),
-      centre(geom.centre()) {
+      shadow_view_counted(program.kernel("rc_shadow_view_counted")),
+      offsets(program.kernel("rc_offsets")), surfaces(upload(c, cs.surfaces)),
+      materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
+      patterns(upload(c, cs.patterns)), centre(geom.centre()) {
   amb_blocked.update(c, std::vector<std::uint32_t>(4, 0u), 0);
   if (st.ambient_list != RenderSettings::AmbientList::None) {
     mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,

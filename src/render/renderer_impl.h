@@ -50,7 +50,7 @@ struct Renderer::Impl {
   CompiledScene cs;
   PhaseProfile prof; // before the program: its lifetime includes building it
   device::Program program;
-  device::Kernel shade, accumulate, shadow_step, pack, shadow_view;
+  device::Kernel shade, accumulate, shadow_step, pack, shadow_view, shadow_view_counted, offsets;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
   device::GrowingBuffer amb_records, amb_nodes, amb_blocked;
   Vec3d centre;
@@ -167,6 +167,14 @@ struct Renderer::Impl {
   static constexpr std::size_t kUncountedWave = 2048;
   // Slices up to this many rays sum their shadow rays speculatively with each step (a GPU).
   static constexpr std::size_t kSumAlongRays = std::size_t{1} << 16;
+  // Slices whose slots' children and shadow views fit this are packed on the device before
+  // the host reads their counts (rc_offsets), in one work-group of kOffsetsGroup items.
+  static constexpr std::size_t kFusedBytes = std::size_t{1} << 20;
+  static constexpr std::size_t kOffsetsGroup = 256; // RC_OFFSETS_GROUP in shade.cl
+  // rc_pack over a slice's slots into the packed places at the given offsets.
+  void run_pack(device::Buffer& slot_sh, device::Buffer& slot_sp, device::Buffer& nshadow,
+                device::Buffer& nspawn, device::Buffer& shadow_off, device::Buffer& spawn_off,
+                std::size_t n, bool with_spawn, device::Buffer& shadows, device::Buffer& spawned);
   // The shadow views read with the children and the sums with the shadow steps, in one wait
   // each (RADCL_FEWER_WAITS=0: each in a wait of its own, to measure what they save).
   const bool fewer_waits = [] {
@@ -199,6 +207,7 @@ struct Renderer::Impl {
     std::vector<rc_shadow> shadows, requested;
     std::vector<std::uint8_t> blocked;
     std::vector<rc_float4> total;
+    std::vector<rc_ray> fused_children; // a fused slice's packed children, read whole
   } shade_scratch;
 
   // ---- Shadow rays (intersect_shadow.cpp) ----

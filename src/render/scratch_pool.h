@@ -36,6 +36,7 @@ enum ScratchSlot {
   kSuperData,
   kShadowSlots,
   kSpawnSlots,
+  kTotals,
   kScratchSlots
 };
 

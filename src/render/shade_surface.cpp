@@ -118,6 +118,26 @@ void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
     std::copy_n(sp.data() + poff[k], nsp[over[k]], children + spawn_off[over[k]]);
 }
 
+void Renderer::Impl::run_pack(device::Buffer& slot_sh, device::Buffer& slot_sp,
+                              device::Buffer& nshadow, device::Buffer& nspawn,
+                              device::Buffer& shadow_off, device::Buffer& spawn_off, std::size_t n,
+                              bool with_spawn, device::Buffer& shadows, device::Buffer& spawned) {
+  pack.arg(0, slot_sh)
+      .arg(1, slot_sp)
+      .arg(2, nshadow)
+      .arg(3, nspawn)
+      .arg(4, shadow_off)
+      .arg(5, spawn_off)
+      .arg(6, static_cast<std::uint32_t>(n))
+      .arg(7, cap_shadow)
+      .arg(8, cap_spawn)
+      .arg(9, throwaway ? 0u : 1u)
+      .arg(10, with_spawn ? 1u : 0u)
+      .arg(11, shadows)
+      .arg(12, spawned);
+  ctx.run(pack, n);
+}
+
 void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n,
                                  std::vector<Vec3d>& sums, std::vector<rc_ray>& next) {
   Timed timed(prof, Phase::Shade);
@@ -142,9 +162,35 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     ctx.finish();
     w1 = std::chrono::steady_clock::now();
   }
+  // A small slice on a GPU has its records packed before the host sees the counts (rc_offsets
+  // places them), and its children and shadow views come back in the counts' wait: its time is
+  // mostly the latency of its waits. Bounded by the slots' room, so it is read whole.
+  ShadeScratch& x = shade_scratch;
+  const bool on_device = !bslot_sp.zero_copy();
+  const bool fused = fewer_waits && on_device &&
+                     n * (csp * sizeof(rc_ray) + csh * sizeof(ShadowView)) <= kFusedBytes;
+  const ShadowView* fused_view = nullptr;
+  if (fused) {
+    device::Buffer& bsoff = scratch(kShadowOff, n * 4);
+    device::Buffer& bpoff = scratch(kSpawnOff, n * 4);
+    device::Buffer& btot = scratch(kTotals, 8);
+    offsets.arg(0, bnshadow).arg(1, bnspawn).arg(2, un).arg(3, bsoff).arg(4, bpoff).arg(5, btot);
+    ctx.run(offsets, kOffsetsGroup, kOffsetsGroup);
+    device::Buffer& bsh = scratch(kShadows, n * csh * sizeof(rc_shadow));
+    device::Buffer& bsp = scratch(kSpawned, n * csp * sizeof(rc_ray));
+    run_pack(bslot_sh, bslot_sp, bnshadow, bnspawn, bsoff, bpoff, n, true, bsh, bsp);
+    if (!throwaway) {
+      device::Buffer& bview = scratch(kShadowView, n * csh * sizeof(ShadowView));
+      shadow_view_counted.arg(0, bsh).arg(1, btot).arg(2, sources).arg(3, bview);
+      ctx.run(shadow_view_counted, n * csh);
+      fused_view =
+          static_cast<const ShadowView*>(bview.peek_later(n * csh * sizeof(ShadowView), peek_view));
+    }
+    x.fused_children.resize(n * csp);
+    bsp.read_later(x.fused_children.data(), n * csp * sizeof(rc_ray));
+  }
   // The counts (and on PoCL this slice's slots, not the pool buffers whole) in one wait: a
   // small wave's time is mostly the latency of its transfers.
-  ShadeScratch& x = shade_scratch;
   std::vector<std::uint32_t>&shadow_off = x.shadow_off, &spawn_off = x.spawn_off;
   shadow_off.resize(n);
   spawn_off.resize(n);
@@ -152,7 +198,6 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   bnspawn.read_later(spawn_off.data(), n * 4);
   // Where the host reads the slots in place (PoCL) it packs them; elsewhere rc_pack packs them
   // on the device and only the records are read back (the slots are mostly room).
-  const bool on_device = !bslot_sp.zero_copy();
   const rc_ray* ssp =
       on_device
           ? nullptr
@@ -178,27 +223,20 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   const std::size_t first_child = next.size();
   next.resize(first_child + nspawn);
   rc_ray* children = next.data() + first_child;
-  device::Buffer& bsoff = scratch(kShadowOff, shadow_off);
+  // Packed already (then the device's offsets are the host's: no ray was over its room)?
+  const bool packed = fused && over.empty();
+  device::Buffer& bsoff =
+      packed ? scratch(kShadowOff, n * 4) : scratch(kShadowOff, shadow_off); // sums read it
   device::Buffer& bsh = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
   const ShadowView* view = nullptr;
-  {
+  if (packed) {
+    std::copy_n(x.fused_children.data(), nspawn, children);
+    if (nshadow) view = fused_view;
+  } else {
     device::Buffer& bpoff = scratch(kSpawnOff, on_device ? spawn_off.size() * 4 : 4);
     if (on_device) bpoff.write(spawn_off.data(), spawn_off.size() * 4);
     device::Buffer& bsp = scratch(kSpawned, std::size_t{on_device ? nspawn : 1} * sizeof(rc_ray));
-    pack.arg(0, bslot_sh)
-        .arg(1, bslot_sp)
-        .arg(2, bnshadow)
-        .arg(3, bnspawn)
-        .arg(4, bsoff)
-        .arg(5, bpoff)
-        .arg(6, un)
-        .arg(7, csh)
-        .arg(8, csp)
-        .arg(9, throwaway ? 0u : 1u)
-        .arg(10, on_device ? 1u : 0u)
-        .arg(11, bsh)
-        .arg(12, bsp);
-    ctx.run(pack, n);
+    run_pack(bslot_sh, bslot_sp, bnshadow, bnspawn, bsoff, bpoff, n, on_device, bsh, bsp);
     // The shadow rays' views come back in the same wait as the children, unless requests
     // shaded again below still have to be written into their places.
     if (fewer_waits && over.empty() && !throwaway && nshadow)
@@ -254,7 +292,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   shadows.resize(traced_shadows ? nshadow : 0);
   if (!shadows.empty()) bsh.read_later(shadows.data(), shadows.size() * sizeof(rc_shadow));
   if (!summed) sum_up();
-  ctx.finish();
+  if (!summed || !shadows.empty()) ctx.finish();
   if (tree && settings.trace == RenderSettings::Trace::Off) {
     tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(), n);
     set_misses_aside(next, first_child);

@@ -14,11 +14,15 @@ namespace radcl::device {
 class Context;
 
 // Bytes moved between host and device memory since the process began (transfers only: a
-// buffer the host reads in place moves nothing), for RADCL_PROFILE.
+// buffer the host reads in place moves nothing), and the times the host waited for the device
+// (finishes, blocking reads and maps: on a GPU each costs the latency of a round trip), for
+// RADCL_PROFILE.
 struct Transfers {
-  std::size_t up = 0, down = 0;
+  std::size_t up = 0, down = 0, waits = 0;
 };
 Transfers transfers();
+// Counts one wait of the host for the device (the device module's own bookkeeping).
+void note_wait();
 
 class Buffer {
 public:

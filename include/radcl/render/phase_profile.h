@@ -3,7 +3,8 @@
 // Device phases are measured from the host, so a blocking read counts the kernels before it.
 // Phases nest: a phase's time includes the phases timed inside it. Each phase also counts the
 // process's CPU time (all threads, PoCL's included), so cores = cpu / wall shows which phases
-// leave cores idle.
+// leave cores idle, and the host's waits for the device in it (device::transfers().waits: on a
+// GPU each is a round trip's latency, which small waves are made of).
 #pragma once
 
 #include <array>
@@ -14,6 +15,8 @@
 #include <iterator>
 #include <string>
 #include <time.h>
+
+#include "radcl/device/buffer.h"
 
 namespace radcl::render {
 
@@ -62,9 +65,10 @@ public:
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
   }
-  void add(Phase p, double seconds, double cpu = 0) {
+  void add(Phase p, double seconds, double cpu = 0, std::size_t waits = 0) {
     sec_[static_cast<int>(p)] += seconds;
     cpu_[static_cast<int>(p)] += cpu;
+    waits_[static_cast<int>(p)] += waits;
     ++calls_[static_cast<int>(p)];
   }
   // The phases, then the profile's lifetime and what no phase timed (phases timed inside
@@ -76,9 +80,10 @@ public:
     static_assert(std::size(names) == static_cast<std::size_t>(Phase::kCount));
     for (int i = 0; i < static_cast<int>(Phase::kCount); ++i)
       if (calls_[i])
-        std::fprintf(f, "profile: %-12s %9.3f s %8llu calls  cpu %8.3f s (%.2f cores)\n", names[i],
-                     sec_[i], static_cast<unsigned long long>(calls_[i]), cpu_[i],
-                     sec_[i] > 0 ? cpu_[i] / sec_[i] : 0.0);
+        std::fprintf(
+            f, "profile: %-12s %9.3f s %8llu calls  cpu %8.3f s (%.2f cores) %7llu waits\n",
+            names[i], sec_[i], static_cast<unsigned long long>(calls_[i]), cpu_[i],
+            sec_[i] > 0 ? cpu_[i] / sec_[i] : 0.0, static_cast<unsigned long long>(waits_[i]));
     double timed = 0;
     for (double s : sec_)
       timed += s;
@@ -113,12 +118,13 @@ public:
       if (running_) {
         t0_ = std::chrono::steady_clock::now();
         c0_ = cpu_now();
+        w0_ = device::transfers().waits;
       }
     }
     void stop() {
       if (running_)
         p_->add(ph_, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(),
-                cpu_now() - c0_);
+                cpu_now() - c0_, device::transfers().waits - w0_);
       running_ = false;
     }
 
@@ -128,6 +134,7 @@ public:
     bool running_ = false;
     std::chrono::steady_clock::time_point t0_{};
     double c0_ = 0;
+    std::size_t w0_ = 0;
   };
 
 private:
@@ -138,6 +145,7 @@ private:
   std::chrono::steady_clock::time_point t0_;
   double cpu0_ = cpu_now();
   std::array<double, static_cast<int>(Phase::kCount)> sec_{}, cpu_{};
+  std::array<std::size_t, static_cast<int>(Phase::kCount)> waits_{};
   std::array<std::uint64_t, static_cast<int>(Phase::kCount)> calls_{};
 };
 
