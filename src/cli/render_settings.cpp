@@ -14,6 +14,12 @@
 namespace radcl::cli {
 
 render::RenderSettings render_settings(const options::RenderOptions& r) {
+  // A global medium (extinction above zero) would change every ray's value: refused rather
+  // than ignored. Its albedo, eccentricity and sampling distance do nothing without it, as in
+  // Radiance.
+  if (std::any_of(r.mist_extinction.begin(), r.mist_extinction.end(),
+                  [](double e) { return e != 0; }))
+    throw FatalError("a participating medium (-me) is not supported yet");
   render::RenderSettings s;
   s.ds = r.direct_sampling;
   s.dj = r.direct_jitter;
