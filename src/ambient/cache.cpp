@@ -232,32 +232,29 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
 
 AmbientCacheBuffers join_ambient_caches(const AmbientCacheBuffers& a, const AmbientCacheBuffers& b,
                                         std::uint32_t b_offset) {
-  if (b.nodes.empty()) return a;
-  AmbientCacheBuffers out;
-  if (a.nodes.empty()) {
-    out = b;
-    for (std::uint32_t& s : out.source)
-      s += b_offset;
-    return out;
-  }
+  AmbientCacheBuffers out = a;
+  rejoin_ambient_caches(out, a.nodes.size(), a.records.size(), b, b_offset);
+  return out;
+}
+
+void rejoin_ambient_caches(AmbientCacheBuffers& ab, std::size_t a_nodes, std::size_t a_records,
+                           const AmbientCacheBuffers& b, std::uint32_t b_offset) {
+  ab.nodes.resize(a_nodes);
+  ab.records.resize(a_records);
+  ab.corral.resize(a_records);
+  ab.source.resize(a_records);
   // The forests side by side: a's trees, then b's (the traversal walks one after another).
-  const auto na = static_cast<std::uint32_t>(a.nodes.size());
-  const auto ra = static_cast<std::uint32_t>(a.records.size());
-  out.nodes.reserve(a.nodes.size() + b.nodes.size());
-  out.nodes = a.nodes;
+  const auto na = static_cast<std::uint32_t>(a_nodes);
+  const auto ra = static_cast<std::uint32_t>(a_records);
   for (rc_amb_node n : b.nodes) {
     n.skip += na;
     if (n.count) n.first += ra;
-    out.nodes.push_back(n);
+    ab.nodes.push_back(n);
   }
-  out.records = a.records;
-  out.records.insert(out.records.end(), b.records.begin(), b.records.end());
-  out.corral = a.corral;
-  out.corral.insert(out.corral.end(), b.corral.begin(), b.corral.end());
-  out.source = a.source;
-  for (std::uint32_t s : b.source)
-    out.source.push_back(s + b_offset);
-  return out;
+  ab.records.insert(ab.records.end(), b.records.begin(), b.records.end());
+  ab.corral.insert(ab.corral.end(), b.corral.begin(), b.corral.end());
+  for (std::uint32_t x : b.source)
+    ab.source.push_back(x + b_offset);
 }
 
 std::array<double, 3> averaged_ambient_value(const std::array<double, 3>& av, int aw,

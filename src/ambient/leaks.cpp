@@ -57,8 +57,8 @@ float corral_atan2a(float y, float x) {
 }
 
 LeakTester::LeakTester(const AmbientCacheBuffers* cache, float aa, float minarad,
-                       std::vector<std::uint32_t> to_index)
-    : cache_(cache), to_index_(std::move(to_index)), aa_(aa), minarad_(minarad) {
+                       const std::vector<std::uint32_t>* to_index)
+    : cache_(cache), to_index_(to_index), aa_(aa), minarad_(minarad) {
   for (std::uint32_t c : cache->corral)
     marked_ += c != 0;
 }
@@ -153,7 +153,7 @@ std::size_t LeakTester::find(const LeakLookup& q, const SegmentBlocked& segment_
       dt2 += cu * cu + cv * cv;
       if (dt2 >= lim2) continue;
       bool t = false;
-      if (leaks(q, k, segment_blocked, &t)) blocked.push_back(to_index_.empty() ? k : to_index_[k]);
+      if (leaks(q, k, segment_blocked, &t)) blocked.push_back(to_index_ ? (*to_index_)[k] : k);
       traced += t;
     }
     i = nd.skip;

@@ -23,59 +23,76 @@ void Renderer::Impl::upload_cache() {
   const char* lt = std::getenv("RADCL_LEAK_TEST"); // "0": no leak test (to measure it)
   const bool leak_test = !(lt && std::string(lt) == "0");
   const std::size_t n = uses_cache(settings) ? cache_local.size() : 0;
-  auto marked_of = [&](std::size_t from, std::size_t to, std::vector<std::uint32_t>& src) {
-    std::vector<ambient::AmbientRecord> recs;
-    src.clear();
-    for (std::size_t i = from; i < to; ++i)
-      if (cache_local[i].corral) {
-        src.push_back(static_cast<std::uint32_t>(i));
-        recs.push_back(cache_local[i]);
-      }
-    return leak_test ? build_ambient_cache(recs, {0, 0, 0}, settings.aa) : AmbientCacheBuffers{};
-  };
-  if (n < base_n || n - base_n > std::max<std::size_t>(256, base_n / 2)) {
-    base_on_device = false;
-    base_n = n;
-    cache_base = build_ambient_cache(std::span(cache_local).first(n), {0, 0, 0}, settings.aa);
-    marked_base = marked_of(0, n, marked_base_src);
+  if (n < (cache_trees.empty() ? 0 : cache_trees.back().to)) {
+    cache_trees.clear();
+    cache = marked = AmbientCacheBuffers{};
+    marked_src.clear();
   }
-  const std::span<const ambient::AmbientRecord> newer =
-      std::span(cache_local).subspan(base_n, n - base_n);
-  cache = join_ambient_caches(cache_base, build_ambient_cache(newer, {0, 0, 0}, settings.aa),
-                              static_cast<std::uint32_t>(base_n));
-  marked = AmbientCacheBuffers{};
-  leak_tester = LeakTester();
-  if (leak_test && !cache.records.empty()) {
-    // The marked records' tree, its leaves named by their index in `cache`.
-    std::vector<std::uint32_t> newer_src;
-    AmbientCacheBuffers mn = marked_of(base_n, n, newer_src);
-    std::vector<std::uint32_t> src = marked_base_src; // marked input index -> cache_local
-    src.insert(src.end(), newer_src.begin(), newer_src.end());
-    marked =
-        join_ambient_caches(marked_base, mn, static_cast<std::uint32_t>(marked_base_src.size()));
-    if (!marked.records.empty()) {
-      std::vector<std::uint32_t> leaf_of(cache_local.size(), 0);
-      for (std::size_t k = 0; k < cache.source.size(); ++k)
-        leaf_of[cache.source[k]] = static_cast<std::uint32_t>(k);
-      std::vector<std::uint32_t> to_full(marked.source.size());
-      for (std::size_t j = 0; j < to_full.size(); ++j)
-        to_full[j] = leaf_of[src[marked.source[j]]];
-      leak_tester = LeakTester(&marked, static_cast<float>(settings.aa),
-                               static_cast<float>(settings.ambient_min_radius), std::move(to_full));
+  if (n > (cache_trees.empty() ? 0 : cache_trees.back().to)) {
+    // The new records make a tree after the others; it absorbs the last one while that is not
+    // twice its size (or is small), so sizes fall by half or more along the forest: O(log n)
+    // trees, and each record rebuilt O(log n) times however many uploads a build makes (the
+    // open-plan floor's makes 1,759 onto up to 225,000 records).
+    CacheTree t;
+    t.from = cache_trees.empty() ? 0 : cache_trees.back().to;
+    t.to = n;
+    t.nodes = cache.nodes.size();
+    t.records = cache.records.size();
+    t.mnodes = marked.nodes.size();
+    t.mrecords = marked.records.size();
+    t.msrc = marked_src.size();
+    cache_trees.push_back(t);
+    while (cache_trees.size() >= 2) {
+      CacheTree& a = cache_trees[cache_trees.size() - 2];
+      const CacheTree& b = cache_trees.back();
+      if (2 * (b.to - b.from) < a.to - a.from && a.to - a.from >= kSmallCacheTree) break;
+      a.to = b.to;
+      cache_trees.pop_back();
     }
+    // Only the last tree changed: it is rebuilt in place after the ones before it.
+    const CacheTree& last = cache_trees.back();
+    const std::span<const ambient::AmbientRecord> recs =
+        std::span(cache_local).subspan(last.from, last.to - last.from);
+    rejoin_ambient_caches(cache, last.nodes, last.records,
+                          build_ambient_cache(recs, {0, 0, 0}, settings.aa),
+                          static_cast<std::uint32_t>(last.from));
+    leaf_of.resize(n);
+    for (std::size_t k = last.records; k < cache.source.size(); ++k)
+      leaf_of[cache.source[k]] = static_cast<std::uint32_t>(k);
+    if (leak_test) {
+      // The marked records' trees over the same ranges, their leaves named by their place in
+      // `cache` for the tester.
+      std::vector<ambient::AmbientRecord> mrecs;
+      marked_src.resize(last.msrc);
+      for (std::size_t i = last.from; i < last.to; ++i)
+        if (cache_local[i].corral) {
+          marked_src.push_back(static_cast<std::uint32_t>(i));
+          mrecs.push_back(cache_local[i]);
+        }
+      rejoin_ambient_caches(marked, last.mnodes, last.mrecords,
+                            build_ambient_cache(mrecs, {0, 0, 0}, settings.aa),
+                            static_cast<std::uint32_t>(last.msrc));
+      to_full.resize(marked.source.size());
+      for (std::size_t j = last.mrecords; j < to_full.size(); ++j)
+        to_full[j] = leaf_of[marked_src[marked.source[j]]];
+    }
+    // The device keeps what comes before the rebuilt tree.
+    amb_records.update(ctx, cache.records, last.records);
+    amb_nodes.update(ctx, cache.nodes, last.nodes);
+  } else if (cache_trees.empty()) {
+    amb_records.update(ctx, cache.records, 0);
+    amb_nodes.update(ctx, cache.nodes, 0);
   }
+  leak_tester = LeakTester();
+  if (leak_test && !marked.records.empty())
+    leak_tester = LeakTester(&marked, static_cast<float>(settings.aa),
+                             static_cast<float>(settings.ambient_min_radius), &to_full);
   base.amb.z = static_cast<float>(cache.nodes.size());
   if (settings.aw > 0 && uses_cache(settings)) {
     auto v = averaged_ambient_value({settings.av[0], settings.av[1], settings.av[2]}, settings.aw,
                                     cache_records);
     base.av = f4(v[0], v[1], v[2], settings.lw);
   }
-  // The joined forest starts with the large tree's nodes and records, which the device
-  // already holds unless that tree was just rebuilt.
-  const bool keep = base_on_device && !cache_base.nodes.empty();
-  amb_records.update(ctx, cache.records, keep ? cache_base.records.size() : 0);
-  amb_nodes.update(ctx, cache.nodes, keep ? cache_base.nodes.size() : 0);
-  base_on_device = true;
   rc_params p = base;
   p.amb.w = collecting ? 1.0f : 0.0f;
   params.write(&p, sizeof p);

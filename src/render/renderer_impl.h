@@ -271,16 +271,21 @@ struct Renderer::Impl {
   // that on the host) and the leak tester.
   ambient::AmbientCacheBuffers cache, marked;
   ambient::LeakTester leak_tester;
-  // The lookup tree (and the leak test's tree of marked records) as a large tree over the
-  // records up to base_n joined to a small one over those added since: the large one is rebuilt
-  // only when the newer records reach half its size (at least 256), so adding records to a
-  // big loaded cache costs what the new ones cost (a cache build uploads a hundred times or
-  // more; rebuilding the whole tree each time cost rpict office_view 256^2 0.16 s of uploads on
-  // 2 cores, now 0.04 s).
-  ambient::AmbientCacheBuffers cache_base, marked_base;
-  std::size_t base_n = 0;
-  bool base_on_device = false;                // the device's lookup buffers begin with cache_base's
-  std::vector<std::uint32_t> marked_base_src; // cache_local index of each marked_base input
+  // The lookup forest (and the leak test's forest of marked records): trees over consecutive
+  // ranges of cache_local, each at most half the size of the one before (or small), laid one
+  // after another in `cache` and `marked`; records joining rebuild only the last tree, so a
+  // build that uploads thousands of times costs O(n log n), and the device keeps the rest.
+  struct CacheTree {
+    std::size_t from = 0, to = 0;         // cache_local range
+    std::size_t nodes = 0, records = 0;   // where it begins in `cache`
+    std::size_t mnodes = 0, mrecords = 0; // where its marked records' tree begins in `marked`
+    std::size_t msrc = 0;                 // where its marked inputs begin in marked_src
+  };
+  static constexpr std::size_t kSmallCacheTree = 256; // a tree this small absorbs the next
+  std::vector<CacheTree> cache_trees;
+  std::vector<std::uint32_t> marked_src; // cache_local index of each marked tree input
+  std::vector<std::uint32_t> leaf_of;    // cache_local index -> leaf in `cache`
+  std::vector<std::uint32_t> to_full;    // leaf in `marked` -> leaf in `cache`
   // The lowest level of any record (INT_MAX: none), counted up to level_seen: a lookup at
   // ambient depth d accepts records of level d or lower only.
   int min_level = std::numeric_limits<int>::max();

@@ -31,6 +31,11 @@ AmbientCacheBuffers build_ambient_cache(std::span<const ambient::AmbientRecord> 
 // rest, so a record added to 100,000 does not rebuild them all.
 AmbientCacheBuffers join_ambient_caches(const AmbientCacheBuffers& a, const AmbientCacheBuffers& b,
                                         std::uint32_t b_offset);
+// The same in place: `ab` keeps its first `a_nodes` nodes and `a_records` records (a forest
+// over those records, as a join left it) and gets b's forest after them, at the cost of b's
+// size, not a's (a cache build joins thousands of times onto a forest of 100,000 records).
+void rejoin_ambient_caches(AmbientCacheBuffers& ab, std::size_t a_nodes, std::size_t a_records,
+                           const AmbientCacheBuffers& b, std::uint32_t b_offset);
 
 // Whether node `nd`'s normal cone can hold a unit normal within angle theta (cosine ct, sine
 // st; theta <= pi/2) of unit `n`, or of -n as well when `two_sided` (as the kernel's test in

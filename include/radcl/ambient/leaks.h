@@ -37,10 +37,11 @@ class LeakTester {
 public:
   LeakTester() = default;
   // `cache` must outlive the tester; `aa` is -aa, `minarad` Radiance's minimum radius.
-  // `to_index` (if not empty) maps cache's records to the indices reported: the tester may walk
-  // a cache of the marked records only, naming them by their place in the full one.
+  // `to_index` (if given, it too must outlive the tester) maps cache's records to the indices
+  // reported: the tester may walk a cache of the marked records only, naming them by their
+  // place in the full one.
   LeakTester(const AmbientCacheBuffers* cache, float aa, float minarad,
-             std::vector<std::uint32_t> to_index = {});
+             const std::vector<std::uint32_t>* to_index = nullptr);
 
   // Whether any record has corral bits (else no lookup needs a test).
   bool active() const { return marked_ > 0; }
@@ -58,7 +59,7 @@ public:
 
 private:
   const AmbientCacheBuffers* cache_ = nullptr;
-  std::vector<std::uint32_t> to_index_;
+  const std::vector<std::uint32_t>* to_index_ = nullptr;
   float aa_ = 0, minarad_ = 0;
   std::size_t marked_ = 0;
 };
