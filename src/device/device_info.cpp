@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "radcl/device/cl.h"
+#include "radcl/device/icd_choice.h"
 #include "radcl/util/error.h"
 
 namespace radcl::device {
@@ -138,6 +139,7 @@ DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::stri
 }
 
 DeviceInfo select_device() {
+  load_only_named_driver();
   const char* spec = std::getenv("RADCL_DEVICE");
   return select_device(enumerate_devices(), spec ? spec : "");
 }
