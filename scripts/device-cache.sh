@@ -48,11 +48,8 @@ for c in ${CACHE_CASES:-P1 P4}; do
     ;;
   P4)
     op=$w/openplan
-    mkdir -p "$op"
-    "$RADCL_BIN/bench_gen_scenes" openplan 10 "$op" > /dev/null
-    cp "$scenes/chair.oct" "$scenes/chair.rad" "$scenes/office_sky_clear.rad" "$op/"
-    (cd "$op" && RAYPATH=.:$RADIANCE_LIB "$RADIANCE_BIN/oconv" -f office_unit.rad > office_unit.oct &&
-      RAYPATH=.:$RADIANCE_LIB "$RADIANCE_BIN/oconv" office_sky_clear.rad floor.rad > openplan.oct)
+    "$RADCL_SOURCE_DIR/tests/bench/openplan_scene.sh" "$RADCL_BIN" "$scenes" "$RADIANCE_BIN" \
+      "$RADIANCE_LIB" "$op"
     grid 10000 0.2 59.8 0.2 23.8 0.8 > "$w/p4.pts"
     head -n 1 "$w/p4.pts" | (cd "$op" && RADCL_DEVICE=nvidia "$RADCL_BIN/rtrace" -h -I $opts openplan.oct > /dev/null)
     one "P4 gpu" "$op" openplan.oct "$w/p4.pts" RADCL_DEVICE=nvidia

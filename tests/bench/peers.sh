@@ -156,11 +156,7 @@ fi
 # P4: the open-plan floor (Radiance's oconv makes the octrees both renderers read).
 if [ $small = 0 ] && want P4; then
   op=$work/openplan
-  mkdir -p "$op"
-  "$build/bin/bench_gen_scenes" openplan 10 "$op" > /dev/null
-  cp "$scenes/chair.oct" "$scenes/chair.rad" "$scenes/office_sky_clear.rad" "$op/"
-  ( cd "$op" && RAYPATH=.:$rlib "$rbin/oconv" -f office_unit.rad > office_unit.oct &&
-    RAYPATH=.:$rlib "$rbin/oconv" office_sky_clear.rad floor.rad > openplan.oct )
+  "$root/tests/bench/openplan_scene.sh" "$build/bin" "$scenes" "$rbin" "$rlib" "$op"
   grid 10000 0.2 59.8 0.2 23.8 0.8 > "$work/p4.pts"
   sensors 4 "$op" "$work/p4.pts" openplan.oct $default
   add P4 "open-plan floor, 1.19M triangles, 10000 pts" "$t" "$r" "$(ratio "$r" "$t")" \
