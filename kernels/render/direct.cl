@@ -19,6 +19,18 @@ struct rc_brdf;
 #ifdef RADCL_HAS_FUNC_MATERIALS
 #include "materials/brdf_func.cl"
 #endif
+struct rc_aniso;
+#if defined(RADCL_HAS_PLASTIC2) || defined(RADCL_HAS_METAL2) || defined(RADCL_HAS_TRANS2) ||       \
+    defined(RADCL_HAS_ASHIK2)
+#define RADCL_HAS_ANISO 1
+#include "materials/aniso.cl"
+/* rc_direct's anisotropic material: a parameter only in the programs of scenes that have one. */
+#define RC_ANISO_PARAM , const struct rc_aniso* an
+#define RC_ANISO_ARG(x) , x
+#else
+#define RC_ANISO_PARAM
+#define RC_ANISO_ARG(x)
+#endif
 
 /* Potential brightness of a candidate, kept in its contrib.w until the selection is made. */
 static inline int rc_shadow_before(global const rc_shadow* a, global const rc_shadow* b) {
@@ -143,12 +155,12 @@ static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* 
 #endif
 
 /* Direct contributions of every source sample (`known`: brightness of what the ray's own value
- * already holds, Radiance's r->rcol, for the threshold), for a normal material m or (m null) a
- * BRDF material b. */
+ * already holds, Radiance's r->rcol, for the threshold), for a normal material m, a BRDF
+ * material b or an anisotropic one an (the others null). */
 RC_NOINLINE
-static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, struct rc_brdf* b,
-                      const rc_ray* r, float3 p, float3 n, float3 d, int flat, float3 coef,
-                      float known, rc_rng_key key) {
+static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m,
+                      struct rc_brdf* b RC_ANISO_PARAM, const rc_ray* r, float3 p, float3 n,
+                      float3 d, int flat, float3 coef, float known, rc_rng_key key) {
   if (o->super) return;  /* the -as pass writes only super-samples */
   if (o->doomed) return; /* a miss: this value will be dropped (rc_out) */
   const rc_params* P = &S->params;
@@ -161,6 +173,11 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, s
 #ifdef RADCL_HAS_FUNC_MATERIALS
   if (b)
     two_sided = rc_brdf_two_sided(b);
+  else
+#endif
+#ifdef RADCL_HAS_ANISO
+      if (an)
+    two_sided = an->trans > RC_FTINY;
   else
 #endif
     two_sided = m->trans > RC_FTINY;
@@ -190,6 +207,11 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m, s
 #ifdef RADCL_HAS_FUNC_MATERIALS
       if (b)
         v = ls * rc_brdf_direct(b, S->args, l, omega);
+      else
+#endif
+#ifdef RADCL_HAS_ANISO
+          if (an)
+        v = ls * rc_aniso_direct(an, l, omega);
       else
 #endif
         v = rc_ward_iso_direct(m, ls, l, omega, n, d, flat);

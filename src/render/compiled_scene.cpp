@@ -32,7 +32,7 @@ bool supported_material(rc_object_type t) {
   case RC_OBJ_ANTIMATTER:
     return true;
   default:
-    return is_func_material(t);
+    return has_func_record(t);
   }
 }
 
@@ -53,7 +53,12 @@ bool real_count_ok(rc_object_type t, std::size_t n) {
   case RC_OBJ_DIELECTRIC:
     return n == 5;
   case RC_OBJ_INTERFACE:
+  case RC_OBJ_TRANS2:
+  case RC_OBJ_ASHIK2:
     return n == 8;
+  case RC_OBJ_PLASTIC2:
+  case RC_OBJ_METAL2:
+    return n == 6;
   default:
     return true;
   }
@@ -375,6 +380,11 @@ private:
     if (!real_count_ok(o.type, o.fargs.size()))
       throw FatalError("bad number of real arguments for " + std::string(scene::type_name(o.type)) +
                        " \"" + o.name + "\"");
+    // Ward's anisotropic lobe divides by both roughnesses (Radiance refuses them at a hit).
+    if ((o.type == RC_OBJ_PLASTIC2 || o.type == RC_OBJ_METAL2 || o.type == RC_OBJ_TRANS2) &&
+        (o.fargs[4] <= 1e-6 || o.fargs[5] <= 1e-6))
+      throw FatalError(std::string(scene::type_name(o.type)) + " \"" + o.name +
+                       "\": roughness too small");
     // illum and mirror name an alternate material for rays other than their own purpose
     // (its patterns are added where a surface's walk places it: with_alternate()).
     std::uint32_t alt = RC_NONE;
@@ -385,7 +395,7 @@ private:
     out_.features.add(o.type);
     std::uint32_t id =
         push_material(o.type, std::vector<float>(o.fargs.begin(), o.fargs.end()), alt);
-    if (shading_ && is_func_material(static_cast<rc_object_type>(o.type))) {
+    if (shading_ && has_func_record(static_cast<rc_object_type>(o.type))) {
       std::uint32_t rec = func_record(sd, obj, nullptr);
       out_.materials[id].func = rec;
     }

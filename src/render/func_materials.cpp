@@ -30,6 +30,24 @@ bool is_func_material(rc_object_type t) {
          is_data_material(t) || t == RC_OBJ_BRTDFUNC;
 }
 
+bool is_aniso_material(rc_object_type t) {
+  return t == RC_OBJ_PLASTIC2 || t == RC_OBJ_METAL2 || t == RC_OBJ_TRANS2 || t == RC_OBJ_ASHIK2;
+}
+
+// Descriptor of plastic2 .. ashik2 (after the 25 transform floats): flags (0), then the
+// orientation vector's three expressions (rc_pattern_call), evaluated in function space.
+std::vector<std::uint32_t> PatternCompiler::compile_orientation(const scene::Object& o,
+                                                                const std::string& where,
+                                                                std::size_t& transform) {
+  if (o.sargs.size() < 4) throw FatalError("bad # arguments for " + where);
+  const std::string ctx = load(o.sargs[3], where);
+  std::vector<std::uint32_t> desc{0u};
+  for (std::size_t i = 0; i < 3; ++i)
+    desc.push_back(request(o.sargs[i], ctx, where));
+  transform = 4;
+  return desc;
+}
+
 std::uint32_t PatternCompiler::request_brdf(const std::string& name, int nargs,
                                             const std::string& context, const std::string& where) {
   auto key = std::make_tuple(name, nargs, context);

@@ -1,8 +1,10 @@
-// The BRDF materials plasfunc, metfunc, transfunc, plasdata, metdata, transdata and BRTDfunc
-// (scene-format.md §3.11, §3.12). Each compiled material carries a function record in the
-// pattern buffer (rc_material::func): its real arguments, its function-space transform and a
-// descriptor of its functions, written by PatternCompiler (src/render/func_materials.cpp) and
-// read by kernels/materials/brdf_func.cl.
+// The materials with function files: the BRDF materials plasfunc, metfunc, transfunc,
+// plasdata, metdata, transdata and BRTDfunc (scene-format.md §3.11, §3.12), and the anisotropic
+// plastic2, metal2, trans2 and ashik2 (§3.3, §3.4), whose orientation vector is three
+// expressions. Each compiled material carries a function record in the pattern buffer
+// (rc_material::func): its real arguments, its function-space transform and a descriptor of
+// its functions, written by PatternCompiler (src/render/func_materials.cpp) and read by
+// kernels/materials/brdf_func.cl and kernels/materials/aniso.cl.
 #pragma once
 
 #include "radcl/device_types.h"
@@ -11,5 +13,11 @@ namespace radcl::render {
 
 // Whether materials of type t are BRDF materials (they need a function record).
 bool is_func_material(rc_object_type t);
+// Whether t is plastic2, metal2, trans2 or ashik2 (a record of their orientation vector).
+bool is_aniso_material(rc_object_type t);
+// Whether materials of type t carry a function record.
+inline bool has_func_record(rc_object_type t) {
+  return is_func_material(t) || is_aniso_material(t);
+}
 
 } // namespace radcl::render

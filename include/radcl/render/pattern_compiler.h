@@ -75,6 +75,9 @@ private:
   // string arguments, as compile_data, and their dispatcher rc_brdf_call().
   std::vector<std::uint32_t> compile_brdf(const scene::Object& o, const std::string& where,
                                           std::vector<float>& args, std::size_t& transform);
+  // plastic2, metal2, trans2, ashik2 (render/func_materials.cpp): their orientation vector.
+  std::vector<std::uint32_t> compile_orientation(const scene::Object& o, const std::string& where,
+                                                 std::size_t& transform);
   std::uint32_t request_brdf(const std::string& name, int nargs, const std::string& context,
                              const std::string& where);
   std::string brdf_source() const;

@@ -1,0 +1,264 @@
+// The anisotropic materials (plastic2, metal2, trans2, ashik2) on the reference scene `aniso`,
+// against Radiance 5.4a's stored outputs (tests/data/README.md). Their specular rays are
+// random even at -ab 0, with heavy tails (a sample that finds the ground glow or the bulb is
+// 30x the rest), so every radcl figure here is the mean over repetitions of the input (each
+// repetition draws other numbers), and Radiance's are means where the reference has them.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <string>
+#include <unistd.h>
+
+#include "radcl/device/context.h"
+#include "radcl/image/picture.h"
+#include "radcl/render/renderer.h"
+#include "radcl/util/error.h"
+#include "reference_data.h"
+#include "test_env.h"
+
+using namespace radcl;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Rgb = std::array<double, 3>;
+
+double lum(const Rgb& c) {
+  return 0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2];
+}
+
+// Each ray (or sensor) of `rays_file` rendered `reps` times; the mean luminance of each.
+std::vector<double> mean_run(const std::string& rays_file, const render::RenderSettings& st,
+                             int reps, std::vector<double>* sd = nullptr) {
+  std::string dir = test::data("scenes");
+  char cwd[4096];
+  EXPECT_NE(getcwd(cwd, sizeof cwd), nullptr);
+  EXPECT_EQ(chdir(dir.c_str()), 0);
+  scene::LoadedScene ls = scene::load_scene({"aniso.oct"});
+  render::Renderer r(ls, st, device::default_context());
+  std::vector<render::PrimaryRay> rays;
+  const auto in = test::read_rays(test::data(rays_file));
+  for (int k = 0; k < reps; ++k)
+    for (const auto& s : in)
+      rays.push_back({{s[0], s[1], s[2]}, {s[3], s[4], s[5]}, 0});
+  std::vector<render::PrimaryResult> res(rays.size());
+  r.render(rays, res);
+  EXPECT_EQ(chdir(cwd), 0);
+  std::vector<double> out(in.size(), 0.0), sq(in.size(), 0.0);
+  for (std::size_t i = 0; i < res.size(); ++i) {
+    out[i % in.size()] += lum(res[i].value) / reps;
+    sq[i % in.size()] += lum(res[i].value) * lum(res[i].value);
+  }
+  if (sd) // one repetition's standard deviation (n - 1)
+    for (std::size_t i = 0; i < in.size(); ++i)
+      sd->push_back(std::sqrt(std::max(0.0, (sq[i] - reps * out[i] * out[i]) / (reps - 1))));
+  return out;
+}
+
+std::vector<double> lums(const std::string& file) {
+  std::vector<double> out;
+  for (const Rgb& c : test::read_rgb(test::data(file)))
+    out.push_back(lum(c));
+  return out;
+}
+
+double sum(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v)
+    s += x;
+  return s;
+}
+
+render::RenderSettings ab0_settings() {
+  render::RenderSettings st;
+  st.ab = 0;
+  st.dj = 0;
+  st.ds = 0.02;
+  st.dt = 0;
+  st.dc = 1;
+  st.ss = 1;
+  st.st = 0.01;
+  return st;
+}
+
+} // namespace
+
+// -ab 0: rays the reference finds noiseless (8 equal runs: they meet no specular lobe, or every
+// sample of it sees the same sky) agree to 1e-4, all but a rare few; on the noisy ones radcl's
+// mean of 8 lies within 3 standard deviations of Radiance's for 90%, and the whole image's
+// light within 2%.
+TEST(GoldenAniso, CameraRaysAb0) {
+  auto ours = mean_run("scenes/aniso_rays.txt", ab0_settings(), 8);
+  auto ref = lums("results/aniso_rays_ab0.txt");
+  auto sd = lums("results/aniso_rays_ab0_sd.txt");
+  ASSERT_EQ(ours.size(), ref.size());
+  int quiet = 0, quiet_ok = 0, noisy = 0, noisy_ok = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    double d = std::fabs(ours[i] - ref[i]);
+    if (sd[i] == 0) {
+      ++quiet;
+      quiet_ok += d <= 1e-4 * std::fabs(ref[i]) + 1e-9;
+    } else {
+      ++noisy;
+      noisy_ok += d <= 3.0 * sd[i] * std::sqrt(1.0 / 8 + 1.0 / 8);
+    }
+  }
+  // One "noiseless" ray (109, on ak_metal) is a rare event: 1 in 5 of Radiance's own runs
+  // there finds the ground glow, none of the reference's 8 did.
+  EXPECT_GE(quiet_ok, quiet - 2) << quiet << " noiseless rays";
+  EXPECT_GE(noisy_ok, 0.9 * noisy) << noisy << " noisy rays";
+  EXPECT_NEAR(sum(ours), sum(ref), 0.02 * sum(ref));
+}
+
+// -ab 1 -aa 0 -ad 2048 on the camera rays against one Radiance run: the total within 3% and
+// the median ray within 1% (the mean of per-ray errors is that one run's noise).
+TEST(GoldenAniso, CameraRaysAa0) {
+  render::RenderSettings st;
+  st.ab = 1;
+  st.aa = 0;
+  st.ad = 2048;
+  st.lw = 1e-5;
+  auto ours = mean_run("scenes/aniso_rays.txt", st, 8);
+  auto ref = lums("results/aniso_rays_aa0.txt");
+  ASSERT_EQ(ours.size(), ref.size());
+  std::vector<double> err;
+  for (std::size_t i = 0; i < ref.size(); ++i)
+    if (ref[i] > 0) err.push_back(std::fabs(ours[i] - ref[i]) / ref[i]);
+  std::nth_element(err.begin(), err.begin() + err.size() / 2, err.end());
+  EXPECT_LE(err[err.size() / 2], 0.01);
+  EXPECT_NEAR(sum(ours), sum(ref), 0.03 * sum(ref));
+}
+
+// The sensors at -ab 1 -aa 0 -ad 4096 against the mean of 4 Radiance runs: mean relative error
+// within 3%, 90% within 3 standard deviations of the difference. A run's deviation is the
+// larger of the reference's and radcl's own over its 8 repetitions: the reference's comes from
+// 4 runs and can be a third of the true one (64 runs of Radiance on sensor 5 give 0.62% where
+// the file says 0.23%; those 64 agree with radcl's mean within 0.1%).
+TEST(GoldenAniso, GridAb1) {
+  render::RenderSettings st;
+  st.ab = 1;
+  st.aa = 0;
+  st.ad = 4096;
+  st.lw = 1e-5;
+  st.irradiance_I = true;
+  std::vector<double> own;
+  auto ours = mean_run("scenes/aniso_grid.pts", st, 8, &own);
+  auto ref = lums("results/aniso_grid_ab1.txt");
+  auto sd = lums("results/aniso_grid_ab1_sd.txt");
+  ASSERT_EQ(ours.size(), ref.size());
+  double err = 0;
+  int within = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    err += std::fabs(ours[i] - ref[i]) / ref[i];
+    double s = std::max(sd[i], own[i]);
+    within += std::fabs(ours[i] - ref[i]) <= 3.0 * s * std::sqrt(1.0 / 4 + 1.0 / 8);
+  }
+  EXPECT_LE(err / ref.size(), 0.03);
+  EXPECT_GE(within, 0.9 * ref.size());
+}
+
+// The default settings with the irradiance cache: no farther from the converged answer
+// (Radiance's mean of 30 -aa 0 runs) than Radiance's own default run.
+TEST(GoldenAniso, GridDefaultNoFartherThanRadiance) {
+  fs::path out = fs::temp_directory_path() / ("radcl-aniso-" + std::to_string(::getpid()) + ".txt");
+  std::string log;
+  int rc = test::run_command("cd " + test::data("scenes") + " && " + test::bin_dir() +
+                                 "/rtrace -h -I -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 "
+                                 "aniso.oct < aniso_grid.pts > " +
+                                 out.string(),
+                             &log);
+  ASSERT_EQ(rc, 0) << log;
+  std::vector<double> ours;
+  for (const Rgb& c : test::read_rgb(out.string()))
+    ours.push_back(lum(c));
+  fs::remove(out);
+  auto conv = lums("results/aniso_grid_mc5.txt");
+  auto theirs = lums("results/aniso_grid_default.txt");
+  ASSERT_EQ(ours.size(), conv.size());
+  double e_ours = 0, e_theirs = 0;
+  for (std::size_t i = 0; i < conv.size(); ++i) {
+    e_ours += std::fabs(ours[i] - conv[i]) / conv[i];
+    e_theirs += std::fabs(theirs[i] - conv[i]) / conv[i];
+  }
+  EXPECT_LE(e_ours, e_theirs) << "mean relative error radcl " << e_ours / conv.size()
+                              << ", Radiance " << e_theirs / conv.size();
+}
+
+// rpict's view (four renders averaged) against the mean of 16 Radiance renders: the mean
+// within 5%, the 8x-reduced picture within 5% RMS (one render of either program is 5-7%).
+TEST(GoldenAniso, ViewMeanAndReducedPicture) {
+  const int w = 256, h = 192, reps = 4;
+  std::vector<double> ours(std::size_t(w) * h, 0.0);
+  for (int k = 0; k < reps; ++k) {
+    fs::path out = fs::temp_directory_path() /
+                   ("radcl-aniso-" + std::to_string(::getpid()) + "-" + std::to_string(k) + ".hdr");
+    std::string log;
+    int rc =
+        test::run_command("cd " + test::data("scenes") + " && RADCL_SEED=" + std::to_string(k + 1) +
+                              " " + test::bin_dir() +
+                              "/rpict -u+ -vf aniso.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 "
+                              "-aa 0.1 -ar 64 -ps 1 -o " +
+                              out.string() + " aniso.oct",
+                          &log);
+    ASSERT_EQ(rc, 0) << log;
+    image::Picture pic = image::read_picture(out.string());
+    fs::remove(out);
+    ASSERT_EQ(pic.width, w);
+    ASSERT_EQ(pic.height, h);
+    auto c = pic.colors();
+    for (std::size_t i = 0; i < c.size(); ++i)
+      ours[i] += lum({c[i][0], c[i][1], c[i][2]}) / reps;
+  }
+  image::Picture ref = image::read_picture(test::data("results/aniso_view_u16.hdr"));
+  ASSERT_EQ(ref.width, w);
+  ASSERT_EQ(ref.height, h);
+  auto rc = ref.colors();
+  double sa = 0, sb = 0, se = 0;
+  int blocks = 0;
+  for (int by = 0; by < h / 8; ++by)
+    for (int bx = 0; bx < w / 8; ++bx) {
+      double a = 0, b = 0;
+      for (int y = by * 8; y < by * 8 + 8; ++y)
+        for (int x = bx * 8; x < bx * 8 + 8; ++x) {
+          std::size_t i = std::size_t(y) * w + x;
+          a += ours[i];
+          b += lum({rc[i][0], rc[i][1], rc[i][2]});
+        }
+      sa += a;
+      sb += b;
+      if (b > 0) {
+        se += (a - b) * (a - b) / (b * b);
+        ++blocks;
+      }
+    }
+  EXPECT_NEAR(sa, sb, 0.05 * sb);
+  EXPECT_LE(std::sqrt(se / blocks), 0.05) << blocks << " blocks";
+}
+
+// Radiance's refusals, as fatal errors naming the material.
+TEST(GoldenAniso, BadArgumentsAreFatal) {
+  auto fails = [](const std::string& mat, const std::string& what) {
+    fs::path dir = fs::temp_directory_path() / ("radcl-aniso-bad-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::path rad = dir / "bad.rad";
+    {
+      std::FILE* f = std::fopen(rad.c_str(), "w");
+      ASSERT_NE(f, nullptr);
+      std::fprintf(f, "%s\nm sphere s\n0\n0\n4 0 0 0 1\n", mat.c_str());
+      std::fclose(f);
+    }
+    std::string log;
+    int rc = test::run_command(
+        "echo '0 0 5 0 0 -1' | " + test::bin_dir() + "/rtrace -h " + rad.string(), &log);
+    fs::remove_all(dir);
+    EXPECT_NE(rc, 0) << mat;
+    EXPECT_NE(log.find(what), std::string::npos) << log;
+    EXPECT_EQ(log.find("internal error"), std::string::npos) << log;
+  };
+  fails("void plastic2 m\n4 0 0 1 .\n0\n6 .5 .5 .5 .05 0 .1",
+        "plastic2 \"m\": roughness too small");
+  fails("void metal2 m\n4 0 0 1 .\n0\n5 .5 .5 .5 .05 .1", "m");
+  fails("void ashik2 m\n4 0 0 1 nowhere.cal\n0\n8 .5 .5 .5 .1 .1 .1 10 10", "nowhere.cal");
+  fails("void trans2 m\n3 0 0 1\n0\n8 .5 .5 .5 .05 .1 .1 .5 .5", "m");
+}
