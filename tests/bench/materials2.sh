@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# The second-wave material scenes (issue 33; so far `aniso`: plastic2, metal2, trans2, ashik2)
+# timed against Radiance side by side in one go: the sensor grid at the default settings
+# (-ab 5 with the cache), the camera rays at -ab 1 -aa 0 -ad 2048 and rpict's reference view
+# (256 x 192, -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1). Radiance's rtrace runs with -n set
+# to the threads given (its rpict: one process; radcl's uses every core). Each time is the
+# fastest of BENCH_REPEAT (default 3) runs, after a warm-up that compiles radcl's programs. Prints seconds and Radiance / radcl ratios.
+#
+# usage: RADIANCE_BIN=... tests/bench/materials2.sh [build-dir] [threads]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=$(cd "${1:-$root/build}" && pwd)
+threads=${2:-$(nproc)}
+repeat=${BENCH_REPEAT:-3}
+: "${RADIANCE_BIN:?set RADIANCE_BIN to the bin folder of Radiance}"
+export RAYPATH=.:${RADIANCE_LIB:-$RADIANCE_BIN/../lib}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$root/tests/data/scenes"
+
+best() { # command...: the fastest of $repeat runs, in seconds
+  local k t b=
+  for ((k = 0; k < repeat; k++)); do
+    t=$(/usr/bin/time -f %e bash -c "$* > /dev/null 2>&1" 2>&1 | tail -1)
+    if [ -z "$b" ] || awk -v a="$t" -v b="$b" 'BEGIN { exit !(a < b) }'; then b=$t; fi
+  done
+  echo "$b"
+}
+
+def="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3"
+aa0="-ab 1 -aa 0 -ad 2048 -lw 1e-5"
+view="-vf aniso.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1"
+"$build/bin/rtrace" -h -I $def aniso.oct < aniso_grid.pts > /dev/null # warm-up
+"$build/bin/rtrace" -h $aa0 aniso.oct < aniso_rays.txt > /dev/null
+printf '%-34s %9s %9s %7s\n' case radcl Radiance ratio
+row() { # label radcl-command radiance-command
+  local a b
+  a=$(best "$2")
+  b=$(best "$3")
+  printf '%-34s %8.2fs %8.2fs %6.2fx\n' "$1" "$a" "$b" "$(awk -v a="$a" -v b="$b" 'BEGIN { print b / a }')"
+}
+row "aniso grid (24), defaults" "$build/bin/rtrace -n $threads -h -I $def aniso.oct < aniso_grid.pts" \
+  "$RADIANCE_BIN/rtrace -n $threads -h -I $def aniso.oct < aniso_grid.pts"
+row "aniso rays (192), -ab 1 -aa 0" "$build/bin/rtrace -n $threads -h $aa0 aniso.oct < aniso_rays.txt" \
+  "$RADIANCE_BIN/rtrace -n $threads -h $aa0 aniso.oct < aniso_rays.txt"
+row "aniso view 256x192 (rpict)" "$build/bin/rpict $view aniso.oct" \
+  "$RADIANCE_BIN/rpict $view aniso.oct"
+echo "($(nproc) cores, $threads threads, fastest of $repeat runs each)"
