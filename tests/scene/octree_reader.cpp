@@ -328,7 +328,8 @@ TEST(OctreeReader, EveryReferenceOctreeLoads) {
                           {"office_clear.oct", 46, false},
                           {"office_clear_frozen.oct", 46, true},
                           {"office_overcast.oct", 44, false},
-                          {"sphere.oct", 4, false}};
+                          {"sphere.oct", 4, false},
+                          {"aniso.oct", 30, false}};
   std::size_t seen = 0;
   for (const auto& e : all) {
     SCOPED_TRACE(e.file);
