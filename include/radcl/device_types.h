@@ -235,15 +235,16 @@ typedef struct rc_source {
   rc_u32 mirror;    /* virtual: the mirror (rc_mirror index) it is seen in, else RC_NONE */
 } rc_source;
 
-/* A planar mirror that relays light sources (Radiance's virtual sources, -dr). */
+/* A planar surface that relays light sources (Radiance's virtual sources, -dr): a mirror, or
+ * one redirection of a prism1/prism2 (one entry per redirection). */
 typedef struct rc_mirror {
   rc_float4 plane;  /* unit normal (the reflecting side) and offset: dot(plane.xyz, x) = w */
   rc_float4 centre; /* ring: centre, w = outer radius */
-  rc_float4 refl;   /* reflectance (rgb); w = ring's inner radius */
+  rc_float4 refl;   /* mirror: reflectance (rgb); w = ring's inner radius */
   rc_u32 surface;   /* compiled surface */
   rc_u32 verts;     /* polygon: offset of its vertices in the vertex buffer */
   rc_u32 nverts;    /* polygon: vertex count; 0 for a ring */
-  rc_u32 pad0;
+  rc_u32 redirect;  /* 0: a mirror; k > 0: the prism's k-th redirection (either side relays) */
 } rc_mirror;
 
 /* A shadow-ray request and the contribution it adds to its primary ray if unoccluded. */
@@ -388,7 +389,7 @@ typedef struct rc_rng_key {
                               F(rc_source, parent) F(rc_source, mirror) F(rc_mirror, plane) F(                         \
                                   rc_mirror,                                                                           \
                                   centre) F(rc_mirror, refl)                                                           \
-                                  F(rc_mirror, surface) F(rc_mirror, verts) F(rc_mirror, nverts) F(rc_mirror, pad0) F( \
+                                  F(rc_mirror, surface) F(rc_mirror, verts) F(rc_mirror, nverts) F(rc_mirror, redirect) F( \
                                       rc_shadow, org) F(rc_shadow, dir)                                                \
                                       F(rc_shadow, contrib) F(rc_shadow, cext) F(                                      \
                                           rc_shadow,                                                                   \

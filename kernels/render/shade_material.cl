@@ -243,6 +243,9 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
 #ifdef RADCL_HAS_ANISO
 #include "materials/aniso_shade.cl"
 #endif
+#ifdef RADCL_HAS_PRISM /* render/virtual.cl */
+#include "materials/prism.cl"
+#endif
 
 #ifdef RADCL_HAS_GLASS
 /* glass: a transmitted ray weighted by T, a mirror ray weighted by R, both from the normal
@@ -401,6 +404,12 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
     return;
   }
 
+#ifdef RADCL_HAS_PRISM
+  if (mat.type == RC_OBJ_PRISM1 || mat.type == RC_OBJ_PRISM2) { /* either side redirects */
+    rc_shade_prism(S, o, &mat, &r, &h, key);
+    return;
+  }
+#endif
 #ifdef RADCL_HAS_FUNC_MATERIALS
   if (mat.type == RC_OBJ_BRTDFUNC) { /* both sides are real: no back-face rule */
     rc_shade_brtdfunc(S, o, &mat, &r, &h, key);

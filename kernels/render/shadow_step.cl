@@ -22,6 +22,26 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
      * is what Embree hit), then, if the pretest asked for it, go on to the imaged source. */
     if (h->pos.w < 0.0f || h->surface == RC_NONE) return RC_SH_BLOCKED;
     if (h->surface == src->surface) {
+#ifdef RADCL_HAS_PRISM
+      uint k = S->mirrors[src->mirror].redirect;
+      if (k) { /* a prism, either side: on in its redirection toward the source imaged */
+        global const rc_source* to = S->sources + src->parent;
+        float3 toward =
+            to->kind == RC_SRC_DISTANT ? to->pos.xyz : normalize(to->pos.xyz - h->pos.xyz);
+        rc_material m = S->materials[S->surfaces[h->surface].material];
+        float3 nd;
+        float c = rc_redirect(S, &m, h, d, toward, k - 1u, &nd);
+        if (!(c > 0.0f)) return RC_SH_BLOCKED;
+        float t = h->pos.w;
+        s->contrib.xyz *= c * rc_ext(cext, t);
+        s->org = (float4)(rc_leave(h->pos.xyz, h->nrm.xyz, nd, P->spec.z), RC_TMIN_OFF);
+        s->dist0 += t;
+        s->sdist0 += t;
+        s->dir = (float4)(nd, distant ? s->dir.w : INFINITY);
+        s->source = src->parent;
+        return (state & ~RC_SH_STATUS) | RC_SH_LATER | RC_SH_BENT | RC_SH_CONTINUE;
+      }
+#endif
       if (!h->front) return RC_SH_BLOCKED;
       float t = h->pos.w;
       s->contrib.xyz *= rc_ext(cext, t);

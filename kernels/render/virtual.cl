@@ -1,10 +1,13 @@
-/* Virtual sources (images of sources in planar mirrors, src/render/virtual_sources.cpp): the
- * way from a shading point to a virtual source must meet the front of each mirror within its
- * outline (Radiance's srcvalue() for SVIRTUAL sources, then m_mirror() aiming on). A virtual
- * source's geometry is already mirrored, so its sampling, horizon, spot and glow tests need
- * nothing else. */
+/* Virtual sources (images of sources in planar mirrors and prisms,
+ * src/render/virtual_sources.cpp): the way from a shading point to a virtual source must meet
+ * the front of each mirror (either side of a prism) within its outline (Radiance's srcvalue()
+ * for SVIRTUAL sources, then m_mirror() aiming on). A virtual source's geometry is already
+ * mapped, so its sampling, horizon, spot and glow tests need nothing else. */
 #ifndef RADCL_RENDER_VIRTUAL_CL
 #define RADCL_RENDER_VIRTUAL_CL
+#if defined(RADCL_HAS_PRISM1) || defined(RADCL_HAS_PRISM2)
+#define RADCL_HAS_PRISM 1 /* relays of prisms (redirect > 0) in the programs that have them */
+#endif
 
 #include "radcl/device_types.h"
 
@@ -14,7 +17,12 @@ static inline int rc_mirror_hit(global const rc_mirror* m, global const float4* 
                                 float3 dir, float3* q) {
   float3 n = m->plane.xyz;
   float dn = dot(dir, n);
-  if (dn >= -1e-6f) return 0; /* parallel, or the back (which is black) */
+  /* Parallel, or a mirror's back (which is black); a prism relays on either side. */
+#ifdef RADCL_HAS_PRISM
+  if (m->redirect ? fabs(dn) <= 1e-6f : dn >= -1e-6f) return 0;
+#else
+  if (dn >= -1e-6f) return 0;
+#endif
   float t = (m->plane.w - dot(n, org)) / dn;
   if (!(t > 0.0f)) return 0;
   float3 x = org + t * dir;
@@ -53,6 +61,11 @@ static float3 rc_virtual_path(global const rc_source* sources, global const rc_m
     global const rc_mirror* m = mirrors + s->mirror;
     float3 q;
     if (!rc_mirror_hit(m, verts, p, l, &q)) return (float3)(0.0f);
+    /* A prism's coefficient and direction are known only at the point met: its shadow rays
+     * follow the way (shadow_step.cl). */
+#ifdef RADCL_HAS_PRISM
+    if (m->redirect) return f;
+#endif
     f *= m->refl.xyz;
     l -= 2.0f * dot(l, m->plane.xyz) * m->plane.xyz;
     p = q;

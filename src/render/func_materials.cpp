@@ -48,6 +48,21 @@ std::vector<std::uint32_t> PatternCompiler::compile_orientation(const scene::Obj
   return desc;
 }
 
+// Descriptor of prism1 and prism2: flags (0), then each redirection's coefficient and
+// direction (four expressions; prism2 has two redirections).
+std::vector<std::uint32_t> PatternCompiler::compile_redirect(const scene::Object& o,
+                                                             const std::string& where,
+                                                             std::size_t& transform) {
+  const std::size_t nexpr = o.type == RC_OBJ_PRISM2 ? 8 : 4;
+  if (o.sargs.size() < nexpr + 1) throw FatalError("bad # arguments for " + where);
+  const std::string ctx = load(o.sargs[nexpr], where);
+  std::vector<std::uint32_t> desc{0u};
+  for (std::size_t i = 0; i < nexpr; ++i)
+    desc.push_back(request(o.sargs[i], ctx, where));
+  transform = nexpr + 1;
+  return desc;
+}
+
 std::uint32_t PatternCompiler::request_brdf(const std::string& name, int nargs,
                                             const std::string& context, const std::string& where) {
   auto key = std::make_tuple(name, nargs, context);

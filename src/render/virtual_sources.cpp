@@ -1,15 +1,19 @@
-// Virtual sources for planar mirrors (Radiance's markvirtuals(), mir_proj(), makevsrc(),
-// vstestvis()). Everything is in the re-centred frame of the compiled sources.
+// Virtual sources for planar mirrors and prisms (Radiance's markvirtuals(), mir_proj(),
+// dir_proj(), makevsrc(), vstestvis()). Everything is in the re-centred frame of the compiled
+// sources.
 #include "radcl/render/virtual_sources.h"
 #include "radcl/util/vec3.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <numbers>
 #include <string>
 
 #include "radcl/geometry/triangulate.h"
+#include "radcl/render/redirect_function.h"
 #include "radcl/scene/material_chain.h"
 #include "radcl/scene/object_type.h"
 #include "radcl/util/error.h"
@@ -18,6 +22,7 @@ namespace radcl::render {
 namespace {
 
 using V3 = std::array<double, 3>;
+using Mat4 = std::array<std::array<double, 4>, 4>; // Radiance's row-vector convention
 using namespace radcl::vec;
 constexpr double kTiny = 1e-6; // Radiance's FTINY
 
@@ -29,14 +34,17 @@ rc_float4 f4(const V3& v, double w) {
           static_cast<float>(w)};
 }
 
-// A mirror with the host's copy of its geometry.
+// A mirror, or one redirection of a prism, with the host's copy of its geometry.
 struct Mirror {
   rc_mirror dev{};
-  V3 n{}, centre{}, u{}, w{}; // front normal, disc centre, in-plane axes
-  double offset = 0;          // dot(n, x) on the plane
-  double rad2 = 0;            // squared radius of the disc holding it
-  double r0 = 0, r1 = 0;      // ring radii
-  std::vector<V3> verts;      // polygon
+  int redirect = 0;                       // 0: mirror; k: the prism's k-th redirection
+  const RedirectFunction* func = nullptr; // prisms
+  std::string material;                   // prisms: its name for messages
+  V3 n{}, centre{}, u{}, w{};             // front normal, disc centre, in-plane axes
+  double offset = 0;                      // dot(n, x) on the plane
+  double rad2 = 0;                        // squared radius of the disc holding it
+  double r0 = 0, r1 = 0;                  // ring radii
+  std::vector<V3> verts;                  // polygon
   bool ring = false;
 
   V3 reflect_point(const V3& p) const { return sub(p, scale(n, 2 * (dot(n, p) - offset))); }
@@ -100,6 +108,7 @@ private:
   const ShadowTester& test_;
   CompiledSources& out_;
   std::vector<Mirror> mirrors_;
+  std::map<std::int32_t, std::unique_ptr<RedirectFunction>> funcs_; // by prism material
 
   void find_mirrors() {
     const V3 c = geom_.centre();
@@ -107,14 +116,16 @@ private:
       const scene::Object& o = scene_.objects[i];
       if (!scene::is_surface(o.type) || o.modifier == scene::kVoid) continue;
       const std::int32_t m = scene::first_material(scene_, static_cast<std::int32_t>(i));
-      if (m == scene::kVoid || scene_.objects[m].type != RC_OBJ_MIRROR) continue;
+      if (m == scene::kVoid) continue;
       const scene::Object& mat = scene_.objects[m];
+      const bool prism = mat.type == RC_OBJ_PRISM1 || mat.type == RC_OBJ_PRISM2;
+      if (mat.type != RC_OBJ_MIRROR && !prism) continue;
       if (o.type != RC_OBJ_POLYGON && o.type != RC_OBJ_RING) {
         warning("secondary sources not supported for " + std::string(scene::type_name(o.type)) +
                 " \"" + o.name + "\"");
         continue;
       }
-      if (mat.fargs.size() != 3) continue; // refused when the material is compiled
+      if (!prism && mat.fargs.size() != 3) continue; // refused when the material is compiled
       Mirror mr;
       if (o.type == RC_OBJ_POLYGON) {
         if (o.fargs.size() < 9 || o.fargs.size() % 3) continue;
@@ -147,14 +158,27 @@ private:
       rc_mirror& d = mr.dev;
       d.plane = f4(mr.n, mr.offset);
       d.centre = f4(mr.centre, mr.r1);
-      d.refl = f4({mat.fargs[0], mat.fargs[1], mat.fargs[2]}, mr.r0);
+      d.refl = prism ? f4({1, 1, 1}, mr.r0) : f4({mat.fargs[0], mat.fargs[1], mat.fargs[2]}, mr.r0);
       d.surface = index_(static_cast<std::int32_t>(i));
       d.verts = static_cast<std::uint32_t>(out_.verts.size());
       d.nverts = static_cast<std::uint32_t>(mr.verts.size());
       for (const V3& v : mr.verts)
         out_.verts.push_back(f4(v, 1));
-      mirrors_.push_back(std::move(mr));
-      out_.mirrors.push_back(mirrors_.back().dev);
+      int relays = 1;
+      if (prism) {
+        auto it = funcs_.find(m);
+        if (it == funcs_.end())
+          it = funcs_.emplace(m, std::make_unique<RedirectFunction>(mat)).first;
+        mr.func = it->second.get();
+        mr.material = std::string(scene::type_name(mat.type)) + " \"" + mat.name + "\"";
+        relays = mr.func->count();
+      }
+      for (int k = 0; k < relays; ++k) { // Radiance's vproject(): each of the prism's projections
+        Mirror e = mr;
+        if (prism) e.redirect = e.dev.redirect = k + 1;
+        mirrors_.push_back(std::move(e));
+        out_.mirrors.push_back(mirrors_.back().dev);
+      }
     }
   }
 
@@ -197,23 +221,34 @@ private:
     return d * d < m.rad2 * (1 - c * c);
   }
 
-  rc_source image(const rc_source& s, std::uint32_t sn, std::uint32_t mi) {
+  // makevsrc(): source s imaged by relay mi through the affine map pm (points p * pm, vectors
+  // without the translation); directions are made unit again, sizes kept, as Radiance does.
+  rc_source image(const rc_source& s, std::uint32_t sn, std::uint32_t mi, const Mat4& pm) {
     const Mirror& m = mirrors_[mi];
+    auto vmap = [&](const V3& v) {
+      V3 o{};
+      for (int j = 0; j < 3; ++j)
+        o[j] = v[0] * pm[0][j] + v[1] * pm[1][j] + v[2] * pm[2][j];
+      return o;
+    };
+    auto pmap = [&](const V3& p) { return add(vmap(p), V3{pm[3][0], pm[3][1], pm[3][2]}); };
+    auto unit = [](const V3& v) { return dot(v, v) > 0 ? normalized(v) : v; };
     rc_source v = s;
-    auto vec = [&](rc_float4& f) { f = f4(m.reflect_vector(xyz(f)), f.w); };
+    auto vec = [&](rc_float4& f) { f = f4(vmap(xyz(f)), f.w); };
+    auto dir = [&](rc_float4& f) { f = f4(unit(vmap(xyz(f))), f.w); };
     if (s.kind == RC_SRC_DISTANT)
-      vec(v.pos);
+      dir(v.pos);
     else
-      v.pos = f4(m.reflect_point(xyz(s.pos)), s.pos.w);
-    vec(v.axis);
+      v.pos = f4(pmap(xyz(s.pos)), s.pos.w);
+    dir(v.axis);
     vec(v.su);
     vec(v.sv);
-    if (s.flags & RC_SRCF_SPOT) vec(v.spot);
+    if (s.flags & RC_SRCF_SPOT) dir(v.spot);
     if (s.nverts > 0) {
       v.verts = static_cast<std::uint32_t>(out_.verts.size());
       for (std::uint32_t k = 0; k < s.nverts; ++k) {
         const rc_float4 p = out_.verts[s.verts + k];
-        out_.verts.push_back(f4(m.reflect_point(xyz(p)), p.w));
+        out_.verts.push_back(f4(pmap(xyz(p)), p.w));
       }
     }
     v.flags |= RC_SRCF_VIRTUAL | RC_SRCF_FOLLOW;
@@ -223,12 +258,79 @@ private:
     return v;
   }
 
+  // A mirror's reflection as an affine map.
+  static Mat4 reflection(const Mirror& m) {
+    Mat4 pm{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        pm[i][j] = (i == j) - 2 * m.n[i] * m.n[j];
+    for (int j = 0; j < 3; ++j)
+      pm[3][j] = 2 * m.offset * m.n[j];
+    pm[3][3] = 1;
+    return pm;
+  }
+
+  // dir_proj(): the map that takes source s to where prism relay m makes it appear, from the
+  // redirection of a ray from the source to the middle of the surface (a shear along the
+  // plane, mirrored when the new direction leaves on the other side). False when there is
+  // none: the ray misses, runs along the plane, or is redirected with no weight.
+  bool redirection(const rc_source& s, const Mirror& m, Mat4& pm) const {
+    V3 rdir;
+    if (s.kind == RC_SRC_DISTANT) {
+      rdir = scale(xyz(s.pos), -1);
+    } else {
+      rdir = sub(m.centre, xyz(s.pos));
+      if (dot(rdir, rdir) <= 0) return false;
+      rdir = normalized(rdir);
+    }
+    const double olddot = dot(rdir, m.n);
+    if (std::abs(olddot) <= kTiny || !m.contains(m.centre)) return false;
+    double coef;
+    V3 nd;
+    if (!m.func->eval(m.redirect - 1, add(m.centre, geom_.centre()), rdir, m.n, coef, nd)) {
+      warning(m.material + ": projection compute error");
+      return false;
+    }
+    if (coef <= kTiny) return false;
+    const double newdot = dot(nd, m.n);
+    if (std::abs(newdot) <= kTiny) return false;
+    const V3 h = sub(scale(nd, 1 / newdot), scale(rdir, 1 / olddot));
+    pm = Mat4{};
+    for (int i = 0; i < 4; ++i)
+      pm[i][i] = 1;
+    for (int j = 0; j < 3; ++j) {
+      for (int i = 0; i < 3; ++i)
+        pm[i][j] += m.n[i] * h[j];
+      pm[3][j] = -m.offset * h[j];
+    }
+    if ((newdot > 0) != (olddot > 0))
+      for (int j = 0; j < 3; ++j) {
+        for (int i = 0; i < 3; ++i)
+          pm[i][j] -= 2 * m.n[i] * m.n[j];
+        pm[3][j] += 2 * m.offset * m.n[j];
+      }
+    return !identity(pm);
+  }
+
+  static bool identity(const Mat4& pm) {
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (std::abs(pm[i][j] - (i == j)) > 1e-12) return false;
+    return true;
+  }
+
   void project(std::uint32_t mi, std::uint32_t sn, int relays) {
     const rc_source s = out_.sources[sn];
-    if ((s.flags & RC_SRCF_VIRTUAL) && s.mirror == mi) return; // no mirror images itself
     const Mirror& m = mirrors_[mi];
-    if (!in_front(s, m) || !relay_possible(s, m)) return;
-    rc_source v = image(s, sn, mi);
+    // No surface images itself (nor one of a prism's redirections the other's sources).
+    if ((s.flags & RC_SRCF_VIRTUAL) && mirrors_[s.mirror].dev.surface == m.dev.surface) return;
+    if ((!m.redirect && !in_front(s, m)) || !relay_possible(s, m)) return;
+    Mat4 pm;
+    if (!m.redirect)
+      pm = reflection(m);
+    else if (!redirection(s, m, pm))
+      return;
+    rc_source v = image(s, sn, mi, pm);
     if (pretest_ > 0 && !pretest(v, m, s, sn)) {
       out_.verts.resize(v.nverts > 0 ? v.verts : out_.verts.size());
       return;
@@ -246,11 +348,12 @@ private:
       if (!(s.flags & RC_SRCF_VIRTUAL)) return f;
       const Mirror& m = mirrors_[s.mirror];
       const double dn = dot(dir, m.n);
-      if (dn >= -kTiny) return 0;
+      if (m.redirect ? std::abs(dn) <= kTiny : dn >= -kTiny) return 0;
       const double t = (m.offset - dot(m.n, org)) / dn;
       if (t <= 0) return 0;
       org = add(org, scale(dir, t));
       if (!m.contains(org)) return 0;
+      if (m.redirect) return f; // the way on is known only to the shadow rays that follow it
       f *= std::max({m.dev.refl.x, m.dev.refl.y, m.dev.refl.z});
       dir = m.reflect_vector(dir);
       sn = s.parent;
@@ -318,7 +421,8 @@ private:
       hits += f > 0;
     }
     if (hits == 0) return false;
-    if (hits == static_cast<int>(got.size())) v.flags &= ~RC_SRCF_FOLLOW;
+    // A prism's shadow rays always follow: they take its coefficient at the point they meet.
+    if (hits == static_cast<int>(got.size()) && !m.redirect) v.flags &= ~RC_SRCF_FOLLOW;
     return true;
   }
 };

@@ -78,6 +78,9 @@ private:
   // plastic2, metal2, trans2, ashik2 (render/func_materials.cpp): their orientation vector.
   std::vector<std::uint32_t> compile_orientation(const scene::Object& o, const std::string& where,
                                                  std::size_t& transform);
+  // prism1, prism2 (same file): their redirections' coefficients and directions.
+  std::vector<std::uint32_t> compile_redirect(const scene::Object& o, const std::string& where,
+                                              std::size_t& transform);
   std::uint32_t request_brdf(const std::string& name, int nargs, const std::string& context,
                              const std::string& where);
   std::string brdf_source() const;
