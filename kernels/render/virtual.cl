@@ -61,9 +61,9 @@ static float3 rc_virtual_path(global const rc_source* sources, global const rc_m
     global const rc_mirror* m = mirrors + s->mirror;
     float3 q;
     if (!rc_mirror_hit(m, verts, p, l, &q)) return (float3)(0.0f);
+#ifdef RADCL_HAS_PRISM
     /* A prism's coefficient and direction are known only at the point met: its shadow rays
      * follow the way (shadow_step.cl). */
-#ifdef RADCL_HAS_PRISM
     if (m->redirect) return f;
 #endif
     f *= m->refl.xyz;
