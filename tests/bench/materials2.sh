@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The second-wave material scenes (issue 33; so far `aniso`: plastic2, metal2, trans2, ashik2)
-# timed against Radiance side by side in one go: the sensor grid at the default settings
+# The second-wave material scenes (issue 33; so far `aniso`: plastic2, metal2, trans2, ashik2;
+# `prism`: prism1, prism2, whose prism.cal is Radiance's and is found on RAYPATH: put the
+# reference scenes folder in RADIANCE_LIB) timed against Radiance side by side in one go: the sensor grid at the default settings
 # (-ab 5 with the cache), the camera rays at -ab 1 -aa 0 -ad 2048 and rpict's reference view
 # (256 x 192, -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1). Radiance's rtrace runs with -n set
 # to the threads given (its rpict: one process; radcl's uses every core). Each time is the
@@ -29,9 +30,6 @@ best() { # command...: the fastest of $repeat runs, in seconds
 
 def="-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3"
 aa0="-ab 1 -aa 0 -ad 2048 -lw 1e-5"
-view="-vf aniso.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1"
-"$build/bin/rtrace" -h -I $def aniso.oct < aniso_grid.pts > /dev/null # warm-up
-"$build/bin/rtrace" -h $aa0 aniso.oct < aniso_rays.txt > /dev/null
 printf '%-34s %9s %9s %7s\n' case radcl Radiance ratio
 row() { # label radcl-command radiance-command
   local a b
@@ -39,10 +37,15 @@ row() { # label radcl-command radiance-command
   b=$(best "$3")
   printf '%-34s %8.2fs %8.2fs %6.2fx\n' "$1" "$a" "$b" "$(awk -v a="$a" -v b="$b" 'BEGIN { print b / a }')"
 }
-row "aniso grid (24), defaults" "$build/bin/rtrace -n $threads -h -I $def aniso.oct < aniso_grid.pts" \
-  "$RADIANCE_BIN/rtrace -n $threads -h -I $def aniso.oct < aniso_grid.pts"
-row "aniso rays (192), -ab 1 -aa 0" "$build/bin/rtrace -n $threads -h $aa0 aniso.oct < aniso_rays.txt" \
-  "$RADIANCE_BIN/rtrace -n $threads -h $aa0 aniso.oct < aniso_rays.txt"
-row "aniso view 256x192 (rpict)" "$build/bin/rpict $view aniso.oct" \
-  "$RADIANCE_BIN/rpict $view aniso.oct"
+for s in aniso prism; do
+  n=$(wc -l < "${s}_grid.pts")
+  view="-vf $s.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1"
+  "$build/bin/rtrace" -h -I $def $s.oct < ${s}_grid.pts > /dev/null # warm-up
+  "$build/bin/rtrace" -h $aa0 $s.oct < ${s}_rays.txt > /dev/null
+  row "$s grid ($n), defaults" "$build/bin/rtrace -n $threads -h -I $def $s.oct < ${s}_grid.pts" \
+    "$RADIANCE_BIN/rtrace -n $threads -h -I $def $s.oct < ${s}_grid.pts"
+  row "$s rays (192), -ab 1 -aa 0" "$build/bin/rtrace -n $threads -h $aa0 $s.oct < ${s}_rays.txt" \
+    "$RADIANCE_BIN/rtrace -n $threads -h $aa0 $s.oct < ${s}_rays.txt"
+  row "$s view 256x192 (rpict)" "$build/bin/rpict $view $s.oct" "$RADIANCE_BIN/rpict $view $s.oct"
+done
 echo "($(nproc) cores, $threads threads, fastest of $repeat runs each)"
