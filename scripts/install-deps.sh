@@ -10,7 +10,7 @@ packages=(
   libembree-dev libtbb-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo
   libopenimageio-dev openimageio-tools libopenexr-dev
-  libfmt-dev libgtest-dev
+  libfmt-dev libgtest-dev libpugixml-dev
   clang clang-format
 )
 missing=()
