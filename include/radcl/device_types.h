@@ -114,7 +114,8 @@ typedef struct rc_ray {
   float dist0;   /* length of the ray tree from the primary's start to this ray's origin (the
                     sum of its ancestors' segments): patterns see T = (dist0 + t) x S, as
                     Radiance's raydist() sums r->rot up the parent chain. 0 for a primary. */
-  rc_u32 pad0, pad1, pad2;
+  float albedo_r, albedo_g, albedo_b; /* scattering albedo of its medium (-ma in the global one,
+                                         0 inside a dielectric) */
 } rc_ray;
 
 /* rc_ray.cell of the first samples of a hemisphere whose -as super-sampling the host decides
@@ -285,6 +286,8 @@ typedef struct rc_params {
                                  minarad), z = number of BVH nodes (0: no cache), w = 1 when a
                                  miss is reported to the host (RC_RAY_AMBMISS) instead of
                                  sampled */
+  rc_float4 medium;           /* the global medium: -me extinction (rgb), w = -mg */
+  rc_float4 albedo;           /* -ma scattering albedo (rgb), w = -ms */
 } rc_params;
 
 /* An irradiance-cache record as the lookup kernel reads it (ambient-file.md §3; Radiance's
@@ -368,7 +371,7 @@ typedef struct rc_rng_key {
   F(rc_ray, org)                                                                                                       \
   F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags) F(                               \
       rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip)                      \
-      F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, pad2) F(rc_hit, pos) F(                             \
+      F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, albedo_b) F(rc_hit, pos) F(                             \
           rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim) F(rc_hit, source)                              \
           F(rc_hit, front) F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(                        \
               rc_surface, object) F(rc_surface, flags) F(rc_surface, clip) F(rc_surface, slots)                        \
@@ -410,7 +413,7 @@ typedef struct rc_rng_key {
                                                       F(rc_params, nsources) F(                                        \
                                                           rc_params,                                                   \
                                                           irradiance_material) F(rc_params, ad)                        \
-                                                          F(rc_params, as) F(rc_params, amb) F(                        \
+                                                          F(rc_params, as) F(rc_params, amb) F(rc_params, medium) F(rc_params, albedo) F(                        \
                                                               rc_amb_record,                                           \
                                                               pos) F(rc_amb_record,                                    \
                                                                      nrm) F(rc_amb_record, udir)                       \

@@ -27,6 +27,9 @@ typedef struct rc_refraction {
   float3 rdir;     /* reflected direction */
   float ratio;     /* index ratio across the boundary */
   int textured;    /* a texture tilted the normal */
+#ifdef RADCL_HAS_MEDIUM
+  int to_global; /* the refracted ray leaves a dielectric into the global medium (-me) */
+#endif
 } rc_refraction;
 
 /* type = RC_OBJ_DIELECTRIC (a: tn x3, n, hartmann) or RC_OBJ_INTERFACE (a: tn1 x3, n1, tn2
@@ -50,12 +53,18 @@ static inline rc_refraction rc_refract_tex(uint type, global const float* a, flo
     side = -side;
     f.set_medium = 1;
     f.cext_in = rc_extinction(a);
-    f.cext_out = iface ? rc_extinction(a + 4) : none; /* no global medium (-me) */
+    f.cext_out = iface ? rc_extinction(a + 4) : none; /* the caller adds a global medium */
+#ifdef RADCL_HAS_MEDIUM
+    f.to_global = !iface;
+#endif
   } else {
     ratio = 1.0f / ratio;
     f.set_medium = iface;
     f.cext_in = iface ? rc_extinction(a + 4) : none;
     f.cext_out = rc_extinction(a);
+#ifdef RADCL_HAS_MEDIUM
+    f.to_global = 0;
+#endif
   }
   f.ratio = ratio;
   float3 rd = d + 2.0f * f.cos1 * f.n;

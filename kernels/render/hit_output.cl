@@ -12,6 +12,10 @@ typedef struct rc_out {
   global rc_ray* spawned;
   float3 immediate; /* contributions that need no shadow test (emission, ambient value) */
   float3 cext;      /* medium of the rays this hit spawns */
+#ifdef RADCL_HAS_MEDIUM
+  float3 albedo; /* its scattering albedo (Radiance's r->albedo) */
+  float3 av;     /* the ambient value it scatters into rays (-av) */
+#endif
   float wfac;       /* extinction estimate on their weight (Radiance's rayorigin) */
   /* -as second pass: per-division super-sample counts of hemisphere `super_which` of this
    * ray ([0] = which, then ns * ns counts); only those samples are written. Else null. */
@@ -40,6 +44,9 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->cap_shadow = o->cap_spawn = 0xFFFFFFFFu;
   o->immediate = (float3)(0.0f);
   o->cext = (float3)(0.0f);
+#ifdef RADCL_HAS_MEDIUM
+  o->albedo = o->av = (float3)(0.0f);
+#endif
   o->wfac = 1.0f;
   o->super = 0;
   o->blocked = 0;
@@ -97,7 +104,12 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
     s.org = rc_leave_org(o, org, dir, tmin);
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
+#ifdef RADCL_HAS_MEDIUM
+    /* The medium the shadow ray starts in; what it scatters is lost to the source. */
+    s.cext = (float4)(o->cext * ((float3)(1.0f) - o->albedo), 0.0f);
+#else
     s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
+#endif
     s.pad0 = 0;
     s.crtype = rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR);
     s.dist0 = o->dist;
@@ -191,7 +203,13 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     r.cext_g = o->cext.y;
     r.cext_b = o->cext.z;
     r.dist0 = o->dist;
-    r.pad0 = r.pad1 = r.pad2 = 0u;
+#ifdef RADCL_HAS_MEDIUM
+    r.albedo_r = o->albedo.x;
+    r.albedo_g = o->albedo.y;
+    r.albedo_b = o->albedo.z;
+#else
+    r.albedo_r = r.albedo_g = r.albedo_b = 0.0f;
+#endif
     o->spawned[o->nspawn] = r;
   }
   o->nspawn++;

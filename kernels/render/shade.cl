@@ -107,6 +107,14 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   rc_rng_key key = rc_make_key(r.primary, r.sample, r.depth, P->seed);
   o->cext = rc_ray_medium(&r);
   o->newclip = r.clip;
+#ifdef RADCL_HAS_MEDIUM
+  o->albedo = (float3)(r.albedo_r, r.albedo_g, r.albedo_b);
+  o->av = P->av.xyz;
+  if (h.surface == RC_NONE) { /* nothing hit: what the medium scatters into the ray */
+    rc_apply_medium(o, &r, o->cext, -1.0f);
+    return;
+  }
+#endif
   if (h.surface == RC_NONE) return; /* nothing hit: black */
   /* Patterns read T from the hit (patterns.cl); children start where this ray ends. */
   h.uv.z = r.dist0;

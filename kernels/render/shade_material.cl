@@ -291,9 +291,18 @@ static void rc_shade_dielectric(const rc_scene_args* S, rc_out* o, const rc_mate
   if (f.trans > 0.0f) {
     float3 keep = o->cext;
     o->cext = f.cext_out;
+#ifdef RADCL_HAS_MEDIUM
+    /* Out of a dielectric into the global medium, which scatters; into one, absorbing only. */
+    float3 keep_albedo = o->albedo;
+    o->albedo = f.to_global ? P->albedo.xyz : (float3)(0.0f);
+    if (f.to_global) o->cext = P->medium.xyz;
+#endif
     rc_spawn(o, r, h->pos.xyz, f.tdir, (float3)(f.trans), RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
              r->ambient_depth);
     o->cext = keep;
+#ifdef RADCL_HAS_MEDIUM
+    o->albedo = keep_albedo;
+#endif
     if (curved && fabs(f.ratio - 1.0f) > RC_FTINY) rc_relabel_child(o, before, 0u, RC_RAY_THROUGH);
   }
   before = o->nspawn;
@@ -320,12 +329,31 @@ static inline float3 rc_hit_medium(const rc_scene_args* S, float3 carried, const
   return carried;
 }
 
+#ifdef RADCL_HAS_MEDIUM
+/* A ray arriving from inside a dielectric travelled in its absorbing medium, which scatters
+ * nothing (Radiance's m_dielectric sets r->albedo to 0 there). */
+static inline void rc_hit_albedo(const rc_scene_args* S, rc_out* o, const rc_material* m,
+                                 float3 d, const rc_hit* h) {
+#if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
+  if (rc_is_dielectric(m->type) && rc_refract(m->type, S->args + m->args, d, h->nrm.xyz).set_medium)
+    o->albedo = (float3)(0.0f);
+#endif
+}
+#endif
+
 /* Absorption along the ray up to its hit scales everything the ray brings back; children
- * inherit the medium and Radiance's estimate of it on their weight. */
+ * inherit the medium and Radiance's estimate of it on their weight. In a scattering medium the
+ * ray also gains the ambient value scattered into it (Radiance's rayparticipate()). */
 static inline void rc_apply_medium(rc_out* o, rc_ray* r, float3 cext, float t) {
   o->cext = cext;
   if (rc_max3(cext) <= 0.0f) return;
+#ifdef RADCL_HAS_MEDIUM
+  float3 e = rc_ext(cext, t);
+  o->immediate += r->coef.xyz * o->albedo * o->av * ((float3)(1.0f) - e);
+  r->coef.xyz *= e;
+#else
   r->coef.xyz *= rc_ext(cext, t);
+#endif
   float re = fmin(cext.x, fmin(cext.y, cext.z)) * (t < 0.0f ? INFINITY : t);
   if (re > 0.1f) o->wfac = re > 92.0f ? 0.0f : exp(-re);
 }
@@ -374,6 +402,9 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
   int irrad_i = (P->flags & RC_PF_IRRAD_I) &&
                 (kind == RC_RAY_PRIMARY || kind == RC_RAY_TRANSMITTED) && r.depth == 0 &&
                 !(rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR));
+#ifdef RADCL_HAS_MEDIUM
+  if (!irrad_i) rc_hit_albedo(S, o, &mat, r.dir.xyz, &h);
+#endif
   rc_apply_medium(o, &r, irrad_i ? o->cext : rc_hit_medium(S, o->cext, &mat, r.dir.xyz, &h),
                   h.pos.w);
   float3 coef = r.coef.xyz;

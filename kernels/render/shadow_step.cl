@@ -165,6 +165,9 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       if (f.trans <= 0.0f) return RC_SH_BLOCKED; /* total internal reflection */
       coef = (float3)(f.trans);
       next_cext = f.cext_out;
+#ifdef RADCL_HAS_MEDIUM
+      if (f.to_global) next_cext = P->medium.xyz * ((float3)(1.0f) - P->albedo.xyz);
+#endif
       if (any(f.tdir != d)) {
         d = f.tdir;
         state |= RC_SH_BENT;

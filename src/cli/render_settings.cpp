@@ -14,13 +14,15 @@
 namespace radcl::cli {
 
 render::RenderSettings render_settings(const options::RenderOptions& r) {
-  // A global medium (extinction above zero) would change every ray's value: refused rather
-  // than ignored. Its albedo, eccentricity and sampling distance do nothing without it, as in
-  // Radiance.
-  if (std::any_of(r.mist_extinction.begin(), r.mist_extinction.end(),
-                  [](double e) { return e != 0; }))
-    throw FatalError("a participating medium (-me) is not supported yet");
   render::RenderSettings s;
+  // The global medium: its albedo, eccentricity and sampling distance do nothing without an
+  // extinction, as in Radiance.
+  for (int c = 0; c < 3; ++c) {
+    s.me[c] = r.mist_extinction[c];
+    s.ma[c] = r.mist_albedo[c];
+  }
+  s.mg = r.mist_eccentricity;
+  s.ms = r.mist_sampling;
   s.ds = r.direct_sampling;
   s.dj = r.direct_jitter;
   s.dt = r.direct_threshold;

@@ -124,4 +124,10 @@ inline bool uses_cache(const RenderSettings& st) {
   return st.ab > 0 && st.aa > 0 && (st.make_records || !st.ambient_records.empty());
 }
 
+// Whether the rays travel in a global medium (-me above zero in some channel, as Radiance
+// tests it).
+inline bool has_medium(const RenderSettings& st) {
+  return std::max({st.me[0], st.me[1], st.me[2]}) > 1e-30;
+}
+
 } // namespace radcl::render::pipeline

@@ -18,6 +18,7 @@ namespace {
 device::ProgramSource shade_program(const CompiledScene& cs, const RenderSettings& st) {
   device::FeatureSet f = cs.features;
   if (uses_cache(st)) f.define("RADCL_HAS_AMBCACHE");
+  if (has_medium(st)) f.define("RADCL_HAS_MEDIUM");
   return f.program({"render/shade.cl"});
 }
 
@@ -87,6 +88,10 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
     cache_local.push_back(local_record(a));
   building = uses_cache(st) && st.make_records && st.trace == RenderSettings::Trace::Off;
   p.amb = f4(st.aa, st.ambient_min_radius, 0, 0);
+  if (has_medium(st)) {
+    p.medium = f4(st.me[0], st.me[1], st.me[2], st.mg);
+    p.albedo = f4(st.ma[0], st.ma[1], st.ma[2], st.ms);
+  }
   base = p;
   upload_cache();
   p = base;

@@ -70,27 +70,30 @@ TEST_F(CommandConventions, BadOptionsAndFilesAsRadiance) {
       << err;
 }
 
-// A global participating medium would change every ray's value, so until radcl has one it is
-// refused, before any output; the medium's other options do nothing without extinction (as in
-// Radiance) and are accepted.
-TEST_F(CommandConventions, MediumRefusedNotIgnored) {
+// The global participating medium's options take effect (tests/render/golden_medium.cpp checks
+// the values); its albedo, eccentricity and sampling distance do nothing without extinction, as
+// in Radiance.
+TEST_F(CommandConventions, MediumOptionsTakeEffect) {
   const std::string cd = "cd " + radcl::test::data("scenes") + " && ", oct = "office_clear.oct";
   std::string out, err;
-  EXPECT_EQ(run(cd + "echo 1 1 1 0 0 1 | " + bin_dir() +
-                    "/rtrace -h -me 0.03 0.03 0.04 -ma 0.8 0.8 " + "0.8 -mg 0.3 " + oct,
-                &out, &err),
-            1);
-  EXPECT_EQ(err, "rtrace: fatal - a participating medium (-me) is not supported yet\n");
-  EXPECT_EQ(out, "");
+  const std::string ray = "echo 1 1 1 0 0 1 | ";
+  EXPECT_EQ(run(cd + ray + bin_dir() + "/rtrace -h -av 1 1 1 " + oct, &out, &err), 0) << err;
+  const std::string clear = out;
   out.clear();
-  EXPECT_EQ(run(cd + bin_dir() + "/rpict -x 8 -y 8 -me 0.01 0 0 " + oct, &out, &err), 1);
-  EXPECT_EQ(err, "rpict: fatal - a participating medium (-me) is not supported yet\n");
-  EXPECT_EQ(out, "");
-  out.clear();
-  EXPECT_EQ(run(cd + "echo 1 1 1 0 0 1 | " + bin_dir() +
-                    "/rtrace -h -me 0 0 0 -ma 0.8 0.8 0.8 -mg " + "0.3 -ms 0.1 " + oct,
+  EXPECT_EQ(run(cd + ray + bin_dir() + "/rtrace -h -av 1 1 1 -me 0.03 0.03 0.04 -ma 0.8 0.8 0.8 " +
+                    "-mg 0.3 " + oct,
                 &out, &err),
             0)
+      << err;
+  EXPECT_NE(out, clear);
+  out.clear();
+  EXPECT_EQ(run(cd + bin_dir() + "/rpict -x 8 -y 8 -me 0.01 0 0 " + oct, &out, &err), 0) << err;
+  EXPECT_EQ(out.rfind("#?RADIANCE", 0), 0u);
+  out.clear();
+  EXPECT_EQ(
+      run(cd + ray + bin_dir() + "/rtrace -h -me 0 0 0 -ma 0.8 0.8 0.8 -mg " + "0.3 -ms 0.1 " + oct,
+          &out, &err),
+      0)
       << err;
   EXPECT_EQ(out, "0.000000e+00\t0.000000e+00\t0.000000e+00\t\n");
 }

@@ -30,6 +30,10 @@ struct RenderSettings {
   bool dv = true, bv = true;
   double ss = 1, st = 0.15;
   Vec3d av{0, 0, 0};
+  // The global participating medium (-me, -ma, -mg, -ms): extinction per unit length, the
+  // scattering albedo, the eccentricity and the source-scattering sample distance.
+  Vec3d me{0, 0, 0}, ma{0, 0, 0};
+  double mg = 0, ms = 0;
   int aw = 0; // -aw: weight of -av in its running average with the cache's values
   int ab = 0;
   int ad = 1024; // -aa 0 hemisphere divisions

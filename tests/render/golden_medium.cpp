@@ -1,0 +1,183 @@
+// The global participating medium (-me, -ma, -mg) on the reference scene `mist_global`: the
+// closed room of `mist` (two ceiling spotlights, a low sun through a glass window) without its
+// mist objects, rendered in a medium of extinction .03 .03 .04 per metre and albedo .8
+// (tests/data/README.md). Rays lose light to extinction and gain the ambient value -av scattered
+// into them; shadow rays lose only what is absorbed; the sun, infinitely far, is extinguished.
+// With no mist object no ray carries a source list, so sources scatter nothing into rays (as in
+// Radiance).
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <string>
+#include <unistd.h>
+
+#include "radcl/device/context.h"
+#include "radcl/image/picture.h"
+#include "radcl/render/renderer.h"
+#include "reference_data.h"
+#include "test_env.h"
+
+using namespace radcl;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Rgb = std::array<double, 3>;
+
+double lum(const Rgb& c) {
+  return 0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2];
+}
+
+render::RenderSettings in_medium(render::RenderSettings st) {
+  st.me = {0.03, 0.03, 0.04};
+  st.ma = {0.8, 0.8, 0.8};
+  st.mg = 0.3;
+  return st;
+}
+
+// Each ray (or sensor) of `rays_file` rendered `reps` times on `octree`; the mean luminance of
+// each and, if asked, one repetition's standard deviation.
+std::vector<double> mean_run(const std::string& octree, const std::string& rays_file,
+                             const render::RenderSettings& st, int reps,
+                             std::vector<double>* sd = nullptr) {
+  char cwd[4096];
+  EXPECT_NE(getcwd(cwd, sizeof cwd), nullptr);
+  EXPECT_EQ(chdir(test::data("scenes").c_str()), 0);
+  scene::LoadedScene ls = scene::load_scene({octree});
+  render::Renderer r(ls, st, device::default_context());
+  std::vector<render::PrimaryRay> rays;
+  const auto in = test::read_rays(test::data(rays_file));
+  for (int k = 0; k < reps; ++k)
+    for (const auto& s : in)
+      rays.push_back({{s[0], s[1], s[2]}, {s[3], s[4], s[5]}, 0});
+  std::vector<render::PrimaryResult> res(rays.size());
+  r.render(rays, res);
+  EXPECT_EQ(chdir(cwd), 0);
+  std::vector<double> out(in.size(), 0.0), sq(in.size(), 0.0);
+  for (std::size_t i = 0; i < res.size(); ++i) {
+    out[i % in.size()] += lum(res[i].value) / reps;
+    sq[i % in.size()] += lum(res[i].value) * lum(res[i].value);
+  }
+  if (sd)
+    for (std::size_t i = 0; i < in.size(); ++i)
+      sd->push_back(std::sqrt(std::max(0.0, (sq[i] - reps * out[i] * out[i]) / (reps - 1))));
+  return out;
+}
+
+std::vector<double> lums(const std::string& file) {
+  std::vector<double> out;
+  for (const Rgb& c : test::read_rgb(test::data(file)))
+    out.push_back(lum(c));
+  return out;
+}
+
+double sum(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v)
+    s += x;
+  return s;
+}
+
+render::RenderSettings ab0_settings() {
+  render::RenderSettings st;
+  st.ab = 0;
+  st.dj = 0;
+  st.ds = 0.02;
+  st.dt = 0;
+  st.dc = 1;
+  st.ss = 1;
+  st.st = 0.01;
+  return in_medium(st);
+}
+
+// -ab 0 camera rays against the mean of Radiance's 8 runs: rays the reference finds noiseless
+// agree to 1e-4 but for two (a floor point on the edge of spotlight A's cone, where Radiance's
+// source partition is random); 90% within 3 standard deviations; the whole within 2%.
+void check_ab0(const std::vector<double>& ours, const std::vector<double>& ref,
+               const std::vector<double>& sd) {
+  ASSERT_EQ(ours.size(), ref.size());
+  int quiet = 0, quiet_ok = 0, within = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    double d = std::fabs(ours[i] - ref[i]);
+    if (sd[i] == 0) {
+      ++quiet;
+      quiet_ok += d <= 1e-4 * std::fabs(ref[i]) + 1e-9;
+    }
+    within += d <= 3.0 * sd[i] * std::sqrt(1.0 + 1.0 / 8) + 1e-4 * std::fabs(ref[i]) + 1e-9;
+  }
+  EXPECT_GE(quiet_ok, quiet - 2) << quiet << " noiseless rays";
+  EXPECT_GE(within, 0.9 * ref.size());
+  EXPECT_NEAR(sum(ours), sum(ref), 0.02 * sum(ref));
+}
+
+} // namespace
+
+TEST(GoldenMedium, CameraRaysAb0) {
+  auto ours = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", ab0_settings(), 1);
+  check_ab0(ours, lums("results/mist_global_rays_ab0.txt"),
+            lums("results/mist_global_rays_ab0_sd.txt"));
+  // The sun beyond the window is infinitely far: its light is all extinguished, and the room
+  // is darker than without the medium.
+  render::RenderSettings clear = ab0_settings();
+  clear.me = {0, 0, 0};
+  auto without = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", clear, 1);
+  EXPECT_LT(sum(ours), 0.9 * sum(without));
+}
+
+// The same with -av .5 .5 .5: every ray gains albedo x av x (1 - its transmittance).
+TEST(GoldenMedium, CameraRaysAb0WithAmbientValue) {
+  render::RenderSettings st = ab0_settings();
+  st.av = {0.5, 0.5, 0.5};
+  auto ours = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", st, 1);
+  check_ab0(ours, lums("results/mist_global_av_rays_ab0.txt"),
+            lums("results/mist_global_av_rays_ab0_sd.txt"));
+}
+
+// -ab 1 -aa 0 -ad 2048 on the camera rays against one Radiance run: the total within 3% (most
+// rays are dim, and one run's per-ray noise is large).
+TEST(GoldenMedium, CameraRaysAa0) {
+  render::RenderSettings st;
+  st.ab = 1;
+  st.aa = 0;
+  st.ad = 2048;
+  st.lw = 1e-5;
+  auto ours = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", in_medium(st), 4);
+  auto ref = lums("results/mist_global_rays_aa0.txt");
+  ASSERT_EQ(ours.size(), ref.size());
+  EXPECT_NEAR(sum(ours), sum(ref), 0.03 * sum(ref));
+}
+
+// The sensors at -ab 1 -aa 0 -ad 4096 against the mean of 4 Radiance runs: the total within
+// 3%, 90% within 3 standard deviations of the difference (most sensors see only the dim
+// indirect light, known to the reference within 50%; the three in the spotlights' beams agree
+// to 1e-4).
+TEST(GoldenMedium, GridAb1) {
+  render::RenderSettings st;
+  st.ab = 1;
+  st.aa = 0;
+  st.ad = 4096;
+  st.lw = 1e-5;
+  st.irradiance_I = true;
+  std::vector<double> own;
+  auto ours = mean_run("mist_nomist.oct", "scenes/mist_grid.pts", in_medium(st), 8, &own);
+  auto ref = lums("results/mist_global_grid_ab1.txt");
+  auto sd = lums("results/mist_global_grid_ab1_sd.txt");
+  ASSERT_EQ(ours.size(), ref.size());
+  int within = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i)
+    within +=
+        std::fabs(ours[i] - ref[i]) <= 3.0 * std::sqrt(sd[i] * sd[i] / 4 + own[i] * own[i] / 8);
+  EXPECT_GE(within, 0.9 * ref.size());
+  EXPECT_NEAR(sum(ours), sum(ref), 0.03 * sum(ref));
+}
+
+// Mist objects are not rendered yet: a scene with one stops, with or without -me.
+TEST(GoldenMedium, MistMaterialIsFatal) {
+  std::string log;
+  int rc = test::run_command("cd " + test::data("scenes") + " && echo '3 2 1.5 0 1 0' | " +
+                                 test::bin_dir() + "/rtrace -h -me .03 .03 .04 mist.oct",
+                             &log);
+  EXPECT_NE(rc, 0);
+  EXPECT_NE(log.find("\"mist\""), std::string::npos) << log;
+  EXPECT_EQ(log.find("internal error"), std::string::npos) << log;
+}
