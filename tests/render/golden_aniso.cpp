@@ -10,6 +10,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "golden_draws.h"
 #include "radcl/device/context.h"
 #include "radcl/image/picture.h"
 #include "radcl/render/renderer.h"
@@ -158,25 +159,6 @@ TEST(GoldenAniso, GridAb1) {
   EXPECT_GE(within, 0.9 * ref.size());
 }
 
-// Mean and sample variance of a list of figures.
-static std::pair<double, double> mean_var(const std::vector<double>& v) {
-  double m = 0, q = 0;
-  for (double x : v)
-    m += x / v.size();
-  for (double x : v)
-    q += (x - m) * (x - m) / (v.size() - 1);
-  return {m, q};
-}
-
-// Mean relative error of one grid run against the converged answer.
-static double grid_error(const std::vector<Rgb>& run, const std::vector<double>& conv) {
-  EXPECT_EQ(run.size(), conv.size());
-  double e = 0;
-  for (std::size_t i = 0; i < conv.size() && i < run.size(); ++i)
-    e += std::fabs(lum(run[i]) - conv[i]) / conv[i] / conv.size();
-  return e;
-}
-
 // The default settings with the irradiance cache: no farther from the converged answer
 // (Radiance's mean of 30 -aa 0 runs) than Radiance's own default run is. rtrace's default is
 // -u+, so a run's error is a draw (Radiance's 12 stored runs: 3.7-5.1%, both programs about
@@ -184,34 +166,14 @@ static double grid_error(const std::vector<Rgb>& run, const std::vector<double>&
 // mean error over six seeds against the mean over Radiance's runs, with three standard errors
 // of that difference, estimated from the runs themselves, as the noise of the comparison.
 TEST(GoldenAniso, GridDefaultNoFartherThanRadiance) {
-  auto conv = lums("results/aniso_grid_mc5.txt");
-  std::vector<double> ours, theirs;
-  for (int seed = 1; seed <= 6; ++seed) {
-    fs::path out = fs::temp_directory_path() / ("radcl-aniso-" + std::to_string(::getpid()) + "-" +
-                                                std::to_string(seed) + ".txt");
-    std::string log;
-    int rc =
-        test::run_command("cd " + test::data("scenes") + " && RADCL_SEED=" + std::to_string(seed) +
-                              " " + test::bin_dir() +
-                              "/rtrace -h -I -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 "
-                              "-lw 1e-3 aniso.oct < aniso_grid.pts > " +
-                              out.string(),
-                          &log);
-    ASSERT_EQ(rc, 0) << log;
-    ours.push_back(grid_error(test::read_rgb(out.string()), conv));
-    fs::remove(out);
-  }
-  for (int i = 1; i <= 12; ++i)
-    theirs.push_back(grid_error(test::read_rgb(test::data("results/radiance_runs/aniso_default_" +
-                                                          std::to_string(i) + ".txt")),
-                                conv));
-  auto [mo, vo] = mean_var(ours);
-  auto [mt, vt] = mean_var(theirs);
-  double se = std::sqrt(vo / ours.size() + vt / theirs.size());
-  EXPECT_LE(mo, mt + 3 * se) << "mean relative error radcl " << mo << ", Radiance " << mt
-                             << " (standard error of the difference " << se << ")";
-  RecordProperty("radcl", std::to_string(mo));
-  RecordProperty("radiance", std::to_string(mt));
+  auto c = test::default_grid_draws("-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3", "aniso.oct",
+                                    "aniso_grid.pts", "aniso_grid_mc5.txt", "aniso_default", 6, 12);
+  ASSERT_TRUE(c.ok) << c.log;
+  EXPECT_LE(c.ours, c.theirs + 3 * c.se)
+      << "mean relative error radcl " << c.ours << ", Radiance " << c.theirs
+      << " (standard error of the difference " << c.se << ")";
+  RecordProperty("radcl", std::to_string(c.ours));
+  RecordProperty("radiance", std::to_string(c.theirs));
 }
 
 // rpict's view (four renders averaged) against the mean of 16 Radiance renders: the mean

@@ -12,6 +12,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "golden_draws.h"
 #include "radcl/device/context.h"
 #include "radcl/image/picture.h"
 #include "radcl/render/renderer.h"
@@ -98,15 +99,6 @@ double sum(const std::vector<double>& v) {
   return s;
 }
 
-std::pair<double, double> mean_var(const std::vector<double>& v) {
-  double m = 0, q = 0;
-  for (double x : v)
-    m += x / v.size();
-  for (double x : v)
-    q += (x - m) * (x - m) / (v.size() - 1);
-  return {m, q};
-}
-
 } // namespace
 
 // -ab 0: views through the panels (redirected to the sky or the ground, or black), the sun's
@@ -183,38 +175,12 @@ TEST_F(GoldenPrism, GridAb1) {
 // high there (error 1.43%) and radcl's 0.2% (1.59%), so with it Radiance's lands on the
 // converged answer and radcl's 0.8% below it.
 TEST_F(GoldenPrism, DISABLED_GridDefaultNoFartherThanRadiance) {
-  auto conv = lums("results/prism_grid_mc5.txt");
-  auto error = [&](const std::vector<Rgb>& run) {
-    EXPECT_EQ(run.size(), conv.size());
-    double e = 0;
-    for (std::size_t i = 0; i < conv.size() && i < run.size(); ++i)
-      e += std::fabs(lum(run[i]) - conv[i]) / conv[i] / conv.size();
-    return e;
-  };
-  std::vector<double> ours, theirs;
-  for (int seed = 1; seed <= 6; ++seed) {
-    fs::path out = fs::temp_directory_path() / ("radcl-prism-" + std::to_string(::getpid()) + "-" +
-                                                std::to_string(seed) + ".txt");
-    std::string log;
-    int rc =
-        test::run_command("cd " + test::data("scenes") + " && RADCL_SEED=" + std::to_string(seed) +
-                              " " + test::bin_dir() +
-                              "/rtrace -h -I -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 "
-                              "-lw 1e-3 prism.oct < prism_grid.pts > " +
-                              out.string(),
-                          &log);
-    ASSERT_EQ(rc, 0) << log;
-    ours.push_back(error(test::read_rgb(out.string())));
-    fs::remove(out);
-  }
-  for (int i = 1; i <= 12; ++i)
-    theirs.push_back(error(test::read_rgb(
-        test::data("results/radiance_runs/prism_default_" + std::to_string(i) + ".txt"))));
-  auto [mo, vo] = mean_var(ours);
-  auto [mt, vt] = mean_var(theirs);
-  double se = std::sqrt(vo / ours.size() + vt / theirs.size());
-  EXPECT_LE(mo, mt + 3 * se) << "mean relative error radcl " << mo << ", Radiance " << mt
-                             << " (standard error of the difference " << se << ")";
+  auto c = test::default_grid_draws("-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3", "prism.oct",
+                                    "prism_grid.pts", "prism_grid_mc5.txt", "prism_default", 6, 12);
+  ASSERT_TRUE(c.ok) << c.log;
+  EXPECT_LE(c.ours, c.theirs + 3 * c.se)
+      << "mean relative error radcl " << c.ours << ", Radiance " << c.theirs
+      << " (standard error of the difference " << c.se << ")";
 }
 
 // rpict's view (four renders averaged) against the mean of 16 Radiance renders: the mean within
@@ -250,32 +216,14 @@ TEST_F(GoldenPrism, ViewMeanAndReducedPicture) {
   image::Picture ref = image::read_picture(test::data("results/prism_view_u16.hdr"));
   ASSERT_EQ(ref.width, w);
   ASSERT_EQ(ref.height, h);
-  auto se_rows = test::read_table(test::data("results/prism_view_u16_se.txt"));
-  ASSERT_EQ(se_rows.size(), std::size_t(h / 8));
-  auto rc = ref.colors();
-  double sa = 0, sb = 0, se = 0;
-  int blocks = 0, lit = 0;
-  for (int by = 0; by < h / 8; ++by)
-    for (int bx = 0; bx < w / 8; ++bx) {
-      double a = 0, b = 0;
-      for (int y = by * 8; y < by * 8 + 8; ++y)
-        for (int x = bx * 8; x < bx * 8 + 8; ++x) {
-          const std::size_t i = std::size_t(y) * w + x;
-          a += ours[i];
-          b += lum({rc[i][0], rc[i][1], rc[i][2]});
-        }
-      sa += a;
-      sb += b;
-      if (b <= 0) continue;
-      ++lit;
-      if (se_rows[by].at(bx) >= 0.02) continue;
-      se += (a - b) * (a - b) / (b * b);
-      ++blocks;
-    }
-  EXPECT_NEAR(sa, sb, 0.05 * sb);
-  EXPECT_GE(blocks, 0.85 * lit);
-  ASSERT_GT(blocks, 0);
-  EXPECT_LE(std::sqrt(se / blocks), 0.05);
+  std::vector<double> theirs;
+  for (const auto& c : ref.colors())
+    theirs.push_back(lum({c[0], c[1], c[2]}));
+  auto st =
+      test::block_stats(ours, theirs, w, h, test::data("results/prism_view_u16_se.txt"), 0.02);
+  EXPECT_NEAR(st.mean_ratio, 1.0, 0.05);
+  EXPECT_GE(st.blocks, 0.85 * st.lit);
+  EXPECT_LE(st.rms, 0.05);
 }
 
 // Bad string arguments and a missing function file are fatal errors naming the material.
