@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The second-wave material scenes (issue 33; so far `aniso`: plastic2, metal2, trans2, ashik2;
 # `prism`: prism1, prism2, whose prism.cal is Radiance's and is found on RAYPATH: put the
-# reference scenes folder in RADIANCE_LIB) timed against Radiance side by side in one go: the sensor grid at the default settings
+# reference scenes folder in RADIANCE_LIB; `mist_global`: the global medium -me/-ma/-mg) timed against Radiance side by side in one go: the sensor grid at the default settings
 # (-ab 5 with the cache), the camera rays at -ab 1 -aa 0 -ad 2048 and rpict's reference view
 # (256 x 192, -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1). Radiance's rtrace runs with -n set
 # to the threads given (its rpict: one process; radcl's uses every core). Each time is the
@@ -37,15 +37,19 @@ row() { # label radcl-command radiance-command
   b=$(best "$3")
   printf '%-34s %8.2fs %8.2fs %6.2fx\n' "$1" "$a" "$b" "$(awk -v a="$a" -v b="$b" 'BEGIN { print b / a }')"
 }
-for s in aniso prism; do
-  n=$(wc -l < "${s}_grid.pts")
-  view="-vf $s.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1"
-  "$build/bin/rtrace" -h -I $def $s.oct < ${s}_grid.pts > /dev/null # warm-up
-  "$build/bin/rtrace" -h $aa0 $s.oct < ${s}_rays.txt > /dev/null
-  row "$s grid ($n), defaults" "$build/bin/rtrace -n $threads -h -I $def $s.oct < ${s}_grid.pts" \
-    "$RADIANCE_BIN/rtrace -n $threads -h -I $def $s.oct < ${s}_grid.pts"
-  row "$s rays (192), -ab 1 -aa 0" "$build/bin/rtrace -n $threads -h $aa0 $s.oct < ${s}_rays.txt" \
-    "$RADIANCE_BIN/rtrace -n $threads -h $aa0 $s.oct < ${s}_rays.txt"
-  row "$s view 256x192 (rpict)" "$build/bin/rpict $view $s.oct" "$RADIANCE_BIN/rpict $view $s.oct"
+# scene: label octree file-prefix extra-options
+for c in "aniso aniso.oct aniso" "prism prism.oct prism" \
+  "mist_global mist_nomist.oct mist -me 0.03 0.03 0.04 -ma 0.8 0.8 0.8 -mg 0.3"; do
+  read -r s oct f extra <<< "$c"
+  n=$(wc -l < "${f}_grid.pts")
+  view="-vf $f.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1 $extra"
+  "$build/bin/rtrace" -h -I $def $extra $oct < ${f}_grid.pts > /dev/null # warm-up
+  "$build/bin/rtrace" -h $aa0 $extra $oct < ${f}_rays.txt > /dev/null
+  "$build/bin/rpict" $view $oct > /dev/null
+  row "$s grid ($n), defaults" "$build/bin/rtrace -n $threads -h -I $def $extra $oct < ${f}_grid.pts" \
+    "$RADIANCE_BIN/rtrace -n $threads -h -I $def $extra $oct < ${f}_grid.pts"
+  row "$s rays (192), -ab 1 -aa 0" "$build/bin/rtrace -n $threads -h $aa0 $extra $oct < ${f}_rays.txt" \
+    "$RADIANCE_BIN/rtrace -n $threads -h $aa0 $extra $oct < ${f}_rays.txt"
+  row "$s view 256x192 (rpict)" "$build/bin/rpict $view $oct" "$RADIANCE_BIN/rpict $view $oct"
 done
 echo "($(nproc) cores, $threads threads, fastest of $repeat runs each)"
