@@ -329,7 +329,10 @@ TEST(OctreeReader, EveryReferenceOctreeLoads) {
                           {"office_clear_frozen.oct", 46, true},
                           {"office_overcast.oct", 44, false},
                           {"sphere.oct", 4, false},
-                          {"aniso.oct", 30, false}};
+                          {"aniso.oct", 30, false},
+                          {"prism.oct", 24, false},
+                          {"mist.oct", 33, false},
+                          {"mist_nomist.oct", 20, false}};
   std::size_t seen = 0;
   for (const auto& e : all) {
     SCOPED_TRACE(e.file);
