@@ -171,9 +171,10 @@ TEST_F(GoldenPrism, GridAb1) {
 // 12 default runs, with three standard errors of the difference as the comparison's noise.
 // Disabled: radcl misses it (2026-12-05, PoCL and the H100: 1.53% against Radiance's 1.13%;
 // the bound is about 1.35%). Not the prisms: the -aa 0 path agrees with Radiance's to 0.04%.
-// Turning on -as 256 lowers both programs' grids by 0.9%; without it Radiance's cache is 0.9%
-// high there (error 1.43%) and radcl's 0.2% (1.59%), so with it Radiance's lands on the
-// converged answer and radcl's 0.8% below it.
+// -as super-sampling, which radcl does as Radiance's ambsupersamp does, lowers both programs'
+// grids by 0.9% here (it decides where to add samples from the samples it then averages, and
+// so dilutes the bright ones). Without it radcl's cache is unbiased (+0.2% at -aa .15, +0.1% at
+// -aa .05) and Radiance's high (+0.9%, +0.5%), so with it Radiance's errors cancel.
 TEST_F(GoldenPrism, DISABLED_GridDefaultNoFartherThanRadiance) {
   auto c = test::default_grid_draws("-ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3", "prism.oct",
                                     "prism_grid.pts", "prism_grid_mc5.txt", "prism_default", 6, 12);
