@@ -24,7 +24,7 @@ for t in "$build"/bin/test_{render,cli,device,calc,ambient}_*; do
 done
 cp /usr/bin/time "$stage/bin/gnu-time"
 # Every library outside glibc and the C++ runtime, which that machine has in newer versions.
-ldd "$build"/bin/{radcl,rtrace,rpict} $(ls "$build"/bin/test_render_golden_ambient 2>/dev/null) | awk '$3 ~ /^\// { print $3 }' |
+ldd "$build"/bin/{radcl,rtrace,rpict} $(ls "$stage"/bin/test_* 2>/dev/null) | awk '$3 ~ /^\// { print $3 }' |
   sort -u | grep -Ev '/(libc|libm|libgcc_s|libstdc\+\+|ld-linux[^/]*)\.so' |
   xargs -r cp -L -t "$stage/lib/"
 cp -r "$ref/results" "$stage/ref/"
