@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "golden_draws.h"
+#include "golden_scene.h"
 #include "radcl/device/context.h"
 #include "radcl/image/picture.h"
 #include "radcl/render/renderer.h"
@@ -19,57 +20,10 @@
 #include "test_env.h"
 
 using namespace radcl;
+using namespace radcl::test::golden;
 namespace fs = std::filesystem;
 
 namespace {
-
-using Rgb = std::array<double, 3>;
-
-double lum(const Rgb& c) {
-  return 0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2];
-}
-
-// Each ray (or sensor) of `rays_file` rendered `reps` times; the mean luminance of each.
-std::vector<double> mean_run(const std::string& rays_file, const render::RenderSettings& st,
-                             int reps, std::vector<double>* sd = nullptr) {
-  std::string dir = test::data("scenes");
-  char cwd[4096];
-  EXPECT_NE(getcwd(cwd, sizeof cwd), nullptr);
-  EXPECT_EQ(chdir(dir.c_str()), 0);
-  scene::LoadedScene ls = scene::load_scene({"aniso.oct"});
-  render::Renderer r(ls, st, device::default_context());
-  std::vector<render::PrimaryRay> rays;
-  const auto in = test::read_rays(test::data(rays_file));
-  for (int k = 0; k < reps; ++k)
-    for (const auto& s : in)
-      rays.push_back({{s[0], s[1], s[2]}, {s[3], s[4], s[5]}, 0});
-  std::vector<render::PrimaryResult> res(rays.size());
-  r.render(rays, res);
-  EXPECT_EQ(chdir(cwd), 0);
-  std::vector<double> out(in.size(), 0.0), sq(in.size(), 0.0);
-  for (std::size_t i = 0; i < res.size(); ++i) {
-    out[i % in.size()] += lum(res[i].value) / reps;
-    sq[i % in.size()] += lum(res[i].value) * lum(res[i].value);
-  }
-  if (sd) // one repetition's standard deviation (n - 1)
-    for (std::size_t i = 0; i < in.size(); ++i)
-      sd->push_back(std::sqrt(std::max(0.0, (sq[i] - reps * out[i] * out[i]) / (reps - 1))));
-  return out;
-}
-
-std::vector<double> lums(const std::string& file) {
-  std::vector<double> out;
-  for (const Rgb& c : test::read_rgb(test::data(file)))
-    out.push_back(lum(c));
-  return out;
-}
-
-double sum(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v)
-    s += x;
-  return s;
-}
 
 render::RenderSettings ab0_settings() {
   render::RenderSettings st;
@@ -90,7 +44,7 @@ render::RenderSettings ab0_settings() {
 // mean of 8 lies within 3 standard deviations of Radiance's for 90%, and the whole image's
 // light within 2%.
 TEST(GoldenAniso, CameraRaysAb0) {
-  auto ours = mean_run("scenes/aniso_rays.txt", ab0_settings(), 8);
+  auto ours = mean_run("aniso.oct", "scenes/aniso_rays.txt", ab0_settings(), 8);
   auto ref = lums("results/aniso_rays_ab0.txt");
   auto sd = lums("results/aniso_rays_ab0_sd.txt");
   ASSERT_EQ(ours.size(), ref.size());
@@ -120,7 +74,7 @@ TEST(GoldenAniso, CameraRaysAa0) {
   st.aa = 0;
   st.ad = 2048;
   st.lw = 1e-5;
-  auto ours = mean_run("scenes/aniso_rays.txt", st, 8);
+  auto ours = mean_run("aniso.oct", "scenes/aniso_rays.txt", st, 8);
   auto ref = lums("results/aniso_rays_aa0.txt");
   ASSERT_EQ(ours.size(), ref.size());
   std::vector<double> err;
@@ -144,7 +98,7 @@ TEST(GoldenAniso, GridAb1) {
   st.lw = 1e-5;
   st.irradiance_I = true;
   std::vector<double> own;
-  auto ours = mean_run("scenes/aniso_grid.pts", st, 8, &own);
+  auto ours = mean_run("aniso.oct", "scenes/aniso_grid.pts", st, 8, &own);
   auto ref = lums("results/aniso_grid_ab1.txt");
   auto sd = lums("results/aniso_grid_ab1_sd.txt");
   ASSERT_EQ(ours.size(), ref.size());
@@ -180,27 +134,10 @@ TEST(GoldenAniso, GridDefaultNoFartherThanRadiance) {
 // within 5%, the 8x-reduced picture within 5% RMS (one render of either program is 5-7%).
 TEST(GoldenAniso, ViewMeanAndReducedPicture) {
   const int w = 256, h = 192, reps = 4;
-  std::vector<double> ours(std::size_t(w) * h, 0.0);
-  for (int k = 0; k < reps; ++k) {
-    fs::path out = fs::temp_directory_path() /
-                   ("radcl-aniso-" + std::to_string(::getpid()) + "-" + std::to_string(k) + ".hdr");
-    std::string log;
-    int rc =
-        test::run_command("cd " + test::data("scenes") + " && RADCL_SEED=" + std::to_string(k + 1) +
-                              " " + test::bin_dir() +
-                              "/rpict -u+ -vf aniso.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 "
-                              "-aa 0.1 -ar 64 -ps 1 -o " +
-                              out.string() + " aniso.oct",
-                          &log);
-    ASSERT_EQ(rc, 0) << log;
-    image::Picture pic = image::read_picture(out.string());
-    fs::remove(out);
-    ASSERT_EQ(pic.width, w);
-    ASSERT_EQ(pic.height, h);
-    auto c = pic.colors();
-    for (std::size_t i = 0; i < c.size(); ++i)
-      ours[i] += lum({c[i][0], c[i][1], c[i][2]}) / reps;
-  }
+  std::string log;
+  auto ours = mean_view("-vf aniso.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1",
+                        "aniso.oct", reps, w, h, &log);
+  ASSERT_FALSE(ours.empty()) << log;
   image::Picture ref = image::read_picture(test::data("results/aniso_view_u16.hdr"));
   ASSERT_EQ(ref.width, w);
   ASSERT_EQ(ref.height, h);

@@ -1,0 +1,105 @@
+// Helpers of the golden tests on the second-wave reference scenes (golden_aniso, golden_prism,
+// golden_medium): mean luminances of repeated renders through the library and through rpict.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "radcl/device/context.h"
+#include "radcl/image/picture.h"
+#include "radcl/render/renderer.h"
+#include "reference_data.h"
+#include "test_env.h"
+
+namespace radcl::test::golden {
+
+using Rgb = std::array<double, 3>;
+
+inline double lum(const Rgb& c) {
+  return 0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2];
+}
+
+inline std::vector<double> lums(const std::string& file) {
+  std::vector<double> out;
+  for (const Rgb& c : read_rgb(data(file)))
+    out.push_back(lum(c));
+  return out;
+}
+
+inline double sum(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v)
+    s += x;
+  return s;
+}
+
+// Each ray (or sensor) of `rays_file` rendered `reps` times on tests/data/scenes/`octree`; the
+// mean luminance of each and, if asked, one repetition's standard deviation (n - 1).
+inline std::vector<double> mean_run(const std::string& octree, const std::string& rays_file,
+                                    const render::RenderSettings& st, int reps,
+                                    std::vector<double>* sd = nullptr) {
+  char cwd[4096];
+  if (!getcwd(cwd, sizeof cwd) || chdir(data("scenes").c_str()) != 0) return {};
+  scene::LoadedScene ls = scene::load_scene({octree});
+  render::Renderer r(ls, st, device::default_context());
+  std::vector<render::PrimaryRay> rays;
+  const auto in = read_rays(data(rays_file));
+  for (int k = 0; k < reps; ++k)
+    for (const auto& s : in)
+      rays.push_back({{s[0], s[1], s[2]}, {s[3], s[4], s[5]}, 0});
+  std::vector<render::PrimaryResult> res(rays.size());
+  r.render(rays, res);
+  if (chdir(cwd) != 0) return {};
+  std::vector<double> out(in.size(), 0.0), sq(in.size(), 0.0);
+  for (std::size_t i = 0; i < res.size(); ++i) {
+    out[i % in.size()] += lum(res[i].value) / reps;
+    sq[i % in.size()] += lum(res[i].value) * lum(res[i].value);
+  }
+  if (sd)
+    for (std::size_t i = 0; i < in.size(); ++i)
+      sd->push_back(std::sqrt(std::max(0.0, (sq[i] - reps * out[i] * out[i]) / (reps - 1))));
+  return out;
+}
+
+// The mean luminance picture of `reps` renders `rpict -u+ <options> -o ... <octree>` with
+// RADCL_SEED 1..reps, each w x h; empty (and *log set) if a render fails or has another size.
+inline std::vector<double> mean_view(const std::string& options, const std::string& octree,
+                                     int reps, int w, int h, std::string* log) {
+  namespace fs = std::filesystem;
+  std::vector<double> ours(std::size_t(w) * h, 0.0);
+  for (int k = 0; k < reps; ++k) {
+    fs::path out = fs::temp_directory_path() /
+                   ("radcl-view-" + std::to_string(::getpid()) + "-" + std::to_string(k) + ".hdr");
+    int rc = run_command("cd " + data("scenes") + " && RADCL_SEED=" + std::to_string(k + 1) + " " +
+                             bin_dir() + "/rpict -u+ " + options + " -o " + out.string() + " " +
+                             octree,
+                         log);
+    if (rc != 0) return {};
+    image::Picture pic = image::read_picture(out.string());
+    fs::remove(out);
+    if (pic.width != w || pic.height != h) {
+      *log = "picture of " + std::to_string(pic.width) + " x " + std::to_string(pic.height);
+      return {};
+    }
+    auto c = pic.colors();
+    for (std::size_t i = 0; i < c.size(); ++i)
+      ours[i] += lum({c[i][0], c[i][1], c[i][2]}) / reps;
+  }
+  return ours;
+}
+
+// A picture's luminances, or empty if it is not w x h.
+inline std::vector<double> picture_luminance(const std::string& file, int w, int h) {
+  image::Picture p = image::read_picture(file);
+  if (p.width != w || p.height != h) return {};
+  std::vector<double> v;
+  for (const auto& c : p.colors())
+    v.push_back(lum({c[0], c[1], c[2]}));
+  return v;
+}
+
+} // namespace radcl::test::golden
