@@ -47,7 +47,6 @@ struct Mirror {
   std::vector<V3> verts;                  // polygon
   bool ring = false;
 
-  V3 reflect_point(const V3& p) const { return sub(p, scale(n, 2 * (dot(n, p) - offset))); }
   V3 reflect_vector(const V3& v) const { return sub(v, scale(n, 2 * dot(n, v))); }
 
   // Whether plane point q lies within the outline (even-odd rule in the plane's frame).
