@@ -69,7 +69,10 @@ typedef struct rc_bsdf_comp {
   /* Tensor trees */
   rc_u32 root;    /* ints offset of the root node */
   float max_hemi; /* Radiance's maxHemi of the residual: the largest total over incidence */
-  rc_u32 pad0, pad1, pad2;
+  float min_psa;  /* Radiance's minProjSA: the smallest projected solid angle of a Klems patch
+                     or (trees) pi times the smallest leaf's edge squared */
+  float max_psa;  /* trees: pi times the largest leaf's edge squared; Klems: the largest patch */
+  rc_u32 pad0;
 } rc_bsdf_comp;
 
 #ifndef __OPENCL_C_VERSION__

@@ -8,6 +8,7 @@
 RC_NOINLINE
 static void rc_ashik_sample(rc_out* o, const rc_ray* r, float3 p, float3 ron, const rc_aniso* m,
                             const rc_params* P, rc_rng_key key, uint dim, uint spawn_dim) {
+  if (o->super) return; /* the -as pass writes only its super-samples */
   float3 d = r->dir.xyz, coef = m->scolor;
   uint depth;
   float weight = rc_child_weight(o, r, &coef, RC_RAY_SPECULAR, P, key, spawn_dim, &depth);
@@ -71,6 +72,6 @@ static void rc_shade_aniso(const rc_scene_args* S, rc_out* o, const rc_material*
   if (m.tdiff > RC_FTINY)
     known += rc_ambient(S, o, r, p, -m.pnorm, m.mcolor * (m.tblt ? m.trans : m.tdiff), dumb, key,
                         1u << 20);
-  rc_direct(S, o, 0, 0 RC_ANISO_ARG(&m), r, p, m.pnorm, d, flat, r->coef.xyz, rc_bright(known),
-            key);
+  rc_direct(S, o, 0, 0 RC_ANISO_ARG(&m) RC_BSDF_ARG(0), r, p, m.pnorm, d, flat, r->coef.xyz,
+            rc_bright(known), key);
 }

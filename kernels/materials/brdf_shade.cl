@@ -24,7 +24,8 @@ static void rc_shade_brdf2(const rc_scene_args* S, rc_out* o, const rc_material*
     known += rc_ambient(S, o, r, p, b.pnorm, b.mcolor * (1.0f - b.trans), dumb, key, 4096);
   if (b.trans > RC_FTINY)
     known += rc_ambient(S, o, r, p, -b.pnorm, b.mcolor * b.trans, dumb, key, 1u << 20);
-  rc_direct(S, o, 0, &b RC_ANISO_ARG(0), r, p, b.pnorm, d, 0, r->coef.xyz, rc_bright(known), key);
+  rc_direct(S, o, 0, &b RC_ANISO_ARG(0) RC_BSDF_ARG(0), r, p, b.pnorm, d, 0, r->coef.xyz,
+            rc_bright(known), key);
 }
 
 /* BRTDfunc (m_brdf): a transmitted ray straight on (bent against a texture's tilt unless the
@@ -59,5 +60,6 @@ static void rc_shade_brtdfunc(const rc_scene_args* S, rc_out* o, const rc_materi
   if (hasrefl) known += rc_ambient(S, o, r, p, b.pnorm, b.rdiff, dumb, key, 4096);
   if (hastrans) known += rc_ambient(S, o, r, p, -b.pnorm, b.tdiff, dumb, key, 1u << 20);
   if (hasrefl || hastrans || (rc_brdf_desc(&b, 0u) & 1u))
-    rc_direct(S, o, 0, &b RC_ANISO_ARG(0), r, p, b.pnorm, d, 0, r->coef.xyz, rc_bright(known), key);
+    rc_direct(S, o, 0, &b RC_ANISO_ARG(0) RC_BSDF_ARG(0), r, p, b.pnorm, d, 0, r->coef.xyz,
+              rc_bright(known), key);
 }

@@ -203,13 +203,15 @@ static inline float3 rc_tree_leaf(const rc_bsdf_tables* t, global const rc_bsdf_
   return c->colour ? (float3)(v[1], v[0], v[2]) : (float3)(v[0]);
 }
 
-static inline float3 rc_tree_lookup(const rc_bsdf_tables* t, global const rc_bsdf_comp* c,
-                                    float4 pos) {
+/* The leaf at a hypercube position; *edge gets its edge length. */
+static inline int rc_tree_find(const rc_bsdf_tables* t, global const rc_bsdf_comp* c, float4 pos,
+                               float* edge) {
   int nd = c->format == RC_BSDF_TT3 ? 3 : 4;
   float p[4] = {pos.x, pos.y, pos.z, pos.w};
   for (int d = 0; d < nd; ++d)
     p[d] = clamp(p[d], 0.0f, RC_BSDF_ALMOST_ONE);
   int k = (int)c->root;
+  *edge = 1.0f;
   while (t->ints[k] < 0) {
     int ch = 0;
     for (int d = 0; d < nd; ++d) {
@@ -220,8 +222,15 @@ static inline float3 rc_tree_lookup(const rc_bsdf_tables* t, global const rc_bsd
       }
     }
     k = t->ints[k + 3 + ch];
+    *edge *= 0.5f;
   }
-  return rc_tree_leaf(t, c, k);
+  return k;
+}
+
+static inline float3 rc_tree_lookup(const rc_bsdf_tables* t, global const rc_bsdf_comp* c,
+                                    float4 pos) {
+  float edge;
+  return rc_tree_leaf(t, c, rc_tree_find(t, c, pos, &edge));
 }
 
 /* Which pair the tree sees: (in, out) or, for transmission through reciprocity, (out, in);

@@ -31,6 +31,17 @@ struct rc_aniso;
 #define RC_ANISO_PARAM
 #define RC_ANISO_ARG(x)
 #endif
+struct rc_bsdf_hit;
+#if defined(RADCL_HAS_BSDF) || defined(RADCL_HAS_ABSDF)
+#define RADCL_HAS_BSDF_MATERIALS 1
+#include "materials/bsdf_material.cl"
+/* rc_direct's BSDF hit: a parameter only in the programs of scenes that have one. */
+#define RC_BSDF_PARAM , const struct rc_bsdf_hit* bh
+#define RC_BSDF_ARG(x) , x
+#else
+#define RC_BSDF_PARAM
+#define RC_BSDF_ARG(x)
+#endif
 
 /* Potential brightness of a candidate, kept in its contrib.w until the selection is made. */
 static inline int rc_shadow_before(global const rc_shadow* a, global const rc_shadow* b) {
@@ -156,11 +167,11 @@ static float3 rc_source_pattern(const rc_scene_args* S, global const rc_source* 
 
 /* Direct contributions of every source sample (`known`: brightness of what the ray's own value
  * already holds, Radiance's r->rcol, for the threshold), for a normal material m, a BRDF
- * material b or an anisotropic one an (the others null). */
+ * material b, an anisotropic one an or a BSDF bh (the others null). */
 RC_NOINLINE
 static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m,
-                      struct rc_brdf* b RC_ANISO_PARAM, const rc_ray* r, float3 p, float3 n,
-                      float3 d, int flat, float3 coef, float known, rc_rng_key key) {
+                      struct rc_brdf* b RC_ANISO_PARAM RC_BSDF_PARAM, const rc_ray* r, float3 p,
+                      float3 n, float3 d, int flat, float3 coef, float known, rc_rng_key key) {
   if (o->super) return;  /* the -as pass writes only super-samples */
   if (o->doomed) return; /* a miss: this value will be dropped (rc_out) */
   const rc_params* P = &S->params;
@@ -170,8 +181,13 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m,
   int select = P->direct.z > 0.0f;
   /* Translucent surfaces see sources on both sides: no horizon test. */
   int two_sided;
+#ifdef RADCL_HAS_BSDF_MATERIALS
+  if (bh)
+    two_sided = bh->mode != RC_BSDF_DIR_R;
+  else
+#endif
 #ifdef RADCL_HAS_FUNC_MATERIALS
-  if (b)
+      if (b)
     two_sided = rc_brdf_two_sided(b);
   else
 #endif
@@ -204,8 +220,13 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m,
         ls *= rc_virtual_path(S->sources, S->mirrors, S->verts, src, p, l);
       if (rc_max3(ls) <= 0.0f) continue;
       float3 v;
+#ifdef RADCL_HAS_BSDF_MATERIALS
+      if (bh)
+        v = ls * rc_bsdf_direct(bh, l, omega, r->coef.w, P, key, (1u << 25) + 128u * dim);
+      else
+#endif
 #ifdef RADCL_HAS_FUNC_MATERIALS
-      if (b)
+          if (b)
         v = ls * rc_brdf_direct(b, S->args, l, omega);
       else
 #endif

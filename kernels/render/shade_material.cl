@@ -98,6 +98,7 @@ static inline uint rc_spec_target(const rc_params* P, const rc_ray* r, float wei
 static inline void rc_gauss_body(rc_out* o, const rc_ray* r, float3 p, float3 n, float3 axis,
                                  float3 u, float3 v, float au, float av, float3 coef, int reflect,
                                  const rc_params* P, rc_rng_key key, uint dim, uint spawn_dim) {
+  if (o->super) return; /* the -as pass writes only its super-samples */
   float3 d = r->dir.xyz;
   uint depth;
   float weight = rc_child_weight(o, r, &coef, RC_RAY_SPECULAR, P, key, spawn_dim, &depth);
@@ -205,7 +206,8 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
     known += rc_ambient(S, o, r, p, -n, m.tcolor * (tblt ? m.trans : m.tdiff), dumb, key, 1u << 20);
   }
 
-  rc_direct(S, o, &m, 0 RC_ANISO_ARG(0), r, p, n, d, flat, r->coef.xyz, rc_bright(known), key);
+  rc_direct(S, o, &m, 0 RC_ANISO_ARG(0) RC_BSDF_ARG(0), r, p, n, d, flat, r->coef.xyz,
+            rc_bright(known), key);
 
   /* Textures bend the clear transmission to d - pert (not for ambient rays, nor where it would
    * leave on the ray's side); its length still adds to rtrace's unmirrored one, as m_normal's
@@ -245,6 +247,9 @@ static void rc_shade_normal(const rc_scene_args* S, rc_out* o, const rc_material
 #endif
 #ifdef RADCL_HAS_PRISM /* render/virtual.cl */
 #include "materials/prism.cl"
+#endif
+#ifdef RADCL_HAS_BSDF_MATERIALS /* render/direct.cl */
+#include "materials/bsdf_shade.cl"
 #endif
 
 #ifdef RADCL_HAS_GLASS
@@ -332,8 +337,8 @@ static inline float3 rc_hit_medium(const rc_scene_args* S, float3 carried, const
 #ifdef RADCL_HAS_MEDIUM
 /* A ray arriving from inside a dielectric travelled in its absorbing medium, which scatters
  * nothing (Radiance's m_dielectric sets r->albedo to 0 there). */
-static inline void rc_hit_albedo(const rc_scene_args* S, rc_out* o, const rc_material* m,
-                                 float3 d, const rc_hit* h) {
+static inline void rc_hit_albedo(const rc_scene_args* S, rc_out* o, const rc_material* m, float3 d,
+                                 const rc_hit* h) {
 #if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
   if (rc_is_dielectric(m->type) && rc_refract(m->type, S->args + m->args, d, h->nrm.xyz).set_medium)
     o->albedo = (float3)(0.0f);
@@ -484,6 +489,12 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
   case RC_OBJ_METDATA:
   case RC_OBJ_TRANSDATA:
     rc_shade_brdf2(S, o, &mat, &r, &h, n, key);
+    break;
+#endif
+#ifdef RADCL_HAS_BSDF_MATERIALS
+  case RC_OBJ_BSDF:
+  case RC_OBJ_ABSDF:
+    rc_shade_bsdf(S, o, &mat, &r, &h, key);
     break;
 #endif
 #ifdef RADCL_HAS_MIRROR

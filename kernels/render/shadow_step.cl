@@ -158,6 +158,13 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       if (!rc_brtdfunc_shadow(S, &m, d, h, pcol, pert, &coef)) return RC_SH_BLOCKED;
       break;
 #endif
+#ifdef RADCL_HAS_BSDF_MATERIALS
+    case RC_OBJ_BSDF:
+    case RC_OBJ_ABSDF: /* a proxy or aBSDF's through component; the back side as -bv says */
+      if (back_pass) break;
+      if (!rc_bsdf_shadow(S, &m, h, d, pcol, pert, &coef)) return RC_SH_BLOCKED;
+      break;
+#endif
 #if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
     case RC_OBJ_DIELECTRIC:
     case RC_OBJ_INTERFACE: {

@@ -212,6 +212,15 @@ double smallest_leaf(const TensorTree& t, int32_t k) {
   return m / 2;
 }
 
+// The largest leaf of the Y tree as read (a leaf grid's cells count as leaves).
+double largest_leaf(const TensorTree& t, int32_t k) {
+  if (t.nodes[k] >= 0) return std::ldexp(1.0, -t.nodes[k]);
+  double m = 0;
+  for (int c = 0; c < (1 << t.ndim); ++c)
+    m = std::max(m, largest_leaf(t, t.nodes[k + 1 + c]));
+  return m / 2;
+}
+
 // pi times the largest mean of the residual over strips of the incident dimensions, from the
 // root's forward slice table (whose cells are no wider than the strips: the tree has leaves
 // at least as small as `step`).
@@ -280,6 +289,14 @@ bool BsdfTables::add_klems(const Component& c, const std::string& file, rc_bsdf_
   }
   rec.lamb = float4_of(lamb);
   rec.max_hemi = static_cast<float>(hemi - kPi * lamb.y);
+  double lo = kPi, hi = 0; // Radiance's minProjSA over both bases' patches
+  for (const bsdf::KlemsBasis* b : {&m.in_basis, &m.out_basis})
+    for (int p = 0; p < b->size(); ++p) {
+      lo = std::min(lo, b->lambda(p));
+      hi = std::max(hi, b->lambda(p));
+    }
+  rec.min_psa = static_cast<float>(lo);
+  rec.max_psa = static_cast<float>(hi);
   if (rec.max_hemi <= kDropHemi) return false;
 
   rec.in_basis = add_basis(m.in_basis, file);
@@ -331,7 +348,10 @@ bool BsdfTables::add_tree(const Component& c, const std::string& file, rc_bsdf_c
   tr.slices(tr.ndim == 3 ? SliceDims{1, {0, 0}, {1, 2}} : SliceDims{2, {0, 1}, {2, 3}}, false, file,
             name);
   rec.lamb = float4_of(lamb);
-  rec.max_hemi = static_cast<float>(tree_max_hemi(tr, std::max(smallest_leaf(ts.y, 0), 1.0 / 32)));
+  const double small = smallest_leaf(ts.y, 0), large = largest_leaf(ts.y, 0);
+  rec.min_psa = static_cast<float>(kPi * small * small);
+  rec.max_psa = static_cast<float>(kPi * large * large);
+  rec.max_hemi = static_cast<float>(tree_max_hemi(tr, std::max(small, 1.0 / 32)));
   if (rec.max_hemi <= kDropHemi) return false;
   // TT4 transmission is sampled through reciprocity too (TT3 is not, as in Radiance).
   const bool reverse = tr.ndim == 4 && transmission(c.part);

@@ -224,6 +224,8 @@ rc_pattern PatternCompiler::compile(const scene::SceneDescription& sd, std::int3
     desc = compile_orientation(o, where, first_xf);
   } else if (is_prism_material(type)) {
     desc = compile_redirect(o, where, first_xf);
+  } else if (is_bsdf_material(type)) {
+    desc = compile_bsdf(o, where, args, first_xf);
   } else {
     // mixfunc: foreground and background come before its coefficient.
     const std::size_t first = type == RC_OBJ_MIXFUNC ? 2 : 0;

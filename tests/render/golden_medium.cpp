@@ -32,16 +32,8 @@ render::RenderSettings in_medium(render::RenderSettings st) {
   return st;
 }
 
-render::RenderSettings ab0_settings() {
-  render::RenderSettings st;
-  st.ab = 0;
-  st.dj = 0;
-  st.ds = 0.02;
-  st.dt = 0;
-  st.dc = 1;
-  st.ss = 1;
-  st.st = 0.01;
-  return in_medium(st);
+render::RenderSettings medium_ab0() {
+  return in_medium(ab0_settings());
 }
 
 // -ab 0 camera rays against the mean of Radiance's 8 runs: rays the reference finds noiseless
@@ -67,12 +59,12 @@ void check_ab0(const std::vector<double>& ours, const std::vector<double>& ref,
 } // namespace
 
 TEST(GoldenMedium, CameraRaysAb0) {
-  auto ours = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", ab0_settings(), 1);
+  auto ours = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", medium_ab0(), 1);
   check_ab0(ours, lums("results/mist_global_rays_ab0.txt"),
             lums("results/mist_global_rays_ab0_sd.txt"));
   // The sun beyond the window is infinitely far: its light is all extinguished, and the room
   // is darker than without the medium.
-  render::RenderSettings clear = ab0_settings();
+  render::RenderSettings clear = medium_ab0();
   clear.me = {0, 0, 0};
   auto without = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", clear, 1);
   EXPECT_LT(sum(ours), 0.9 * sum(without));
@@ -80,7 +72,7 @@ TEST(GoldenMedium, CameraRaysAb0) {
 
 // The same with -av .5 .5 .5: every ray gains albedo x av x (1 - its transmittance).
 TEST(GoldenMedium, CameraRaysAb0WithAmbientValue) {
-  render::RenderSettings st = ab0_settings();
+  render::RenderSettings st = medium_ab0();
   st.av = {0.5, 0.5, 0.5};
   auto ours = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", st, 1);
   check_ab0(ours, lums("results/mist_global_av_rays_ab0.txt"),
@@ -90,11 +82,7 @@ TEST(GoldenMedium, CameraRaysAb0WithAmbientValue) {
 // -ab 1 -aa 0 -ad 2048 on the camera rays against one Radiance run: the total within 3% (most
 // rays are dim, and one run's per-ray noise is large).
 TEST(GoldenMedium, CameraRaysAa0) {
-  render::RenderSettings st;
-  st.ab = 1;
-  st.aa = 0;
-  st.ad = 2048;
-  st.lw = 1e-5;
+  render::RenderSettings st = aa0_settings();
   auto ours = mean_run("mist_nomist.oct", "scenes/mist_rays.txt", in_medium(st), 4);
   auto ref = lums("results/mist_global_rays_aa0.txt");
   ASSERT_EQ(ours.size(), ref.size());
@@ -106,12 +94,7 @@ TEST(GoldenMedium, CameraRaysAa0) {
 // indirect light, known to the reference within 50%; the three in the spotlights' beams agree
 // to 1e-4).
 TEST(GoldenMedium, GridAb1) {
-  render::RenderSettings st;
-  st.ab = 1;
-  st.aa = 0;
-  st.ad = 4096;
-  st.lw = 1e-5;
-  st.irradiance_I = true;
+  render::RenderSettings st = grid_ab1_settings();
   std::vector<double> own;
   auto ours = mean_run("mist_nomist.oct", "scenes/mist_grid.pts", in_medium(st), 8, &own);
   auto ref = lums("results/mist_global_grid_ab1.txt");

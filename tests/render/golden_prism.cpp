@@ -65,15 +65,7 @@ protected:
 // patches on the ceiling and floor from the panels' virtual sources, the rest of the room
 // black. The reference's 8 runs agree exactly (no sampling: -dj 0), and so must radcl.
 TEST_F(GoldenPrism, CameraRaysAb0) {
-  render::RenderSettings st;
-  st.ab = 0;
-  st.dj = 0;
-  st.ds = 0.02;
-  st.dt = 0;
-  st.dc = 1;
-  st.ss = 1;
-  st.st = 0.01;
-  auto ours = mean_run("prism.oct", "scenes/prism_rays.txt", st, 1);
+  auto ours = mean_run("prism.oct", "scenes/prism_rays.txt", ab0_settings(), 1);
   auto ref = lums("results/prism_rays_ab0.txt");
   ASSERT_EQ(ours.size(), ref.size());
   int lit = 0;
@@ -87,31 +79,18 @@ TEST_F(GoldenPrism, CameraRaysAb0) {
 // -ab 1 -aa 0 -ad 2048 on the camera rays against one Radiance run: the total within 3% and
 // the median ray within 2% (the per-ray spread is that one run's noise).
 TEST_F(GoldenPrism, CameraRaysAa0) {
-  render::RenderSettings st;
-  st.ab = 1;
-  st.aa = 0;
-  st.ad = 2048;
-  st.lw = 1e-5;
+  render::RenderSettings st = aa0_settings();
   auto ours = mean_run("prism.oct", "scenes/prism_rays.txt", st, 4);
   auto ref = lums("results/prism_rays_aa0.txt");
   ASSERT_EQ(ours.size(), ref.size());
-  std::vector<double> err;
-  for (std::size_t i = 0; i < ref.size(); ++i)
-    if (ref[i] > 0) err.push_back(std::fabs(ours[i] - ref[i]) / ref[i]);
-  std::nth_element(err.begin(), err.begin() + err.size() / 2, err.end());
-  EXPECT_LE(err[err.size() / 2], 0.02);
+  EXPECT_LE(median_error(ours, ref), 0.02);
   EXPECT_NEAR(sum(ours), sum(ref), 0.03 * sum(ref));
 }
 
 // The sensors at -ab 1 -aa 0 -ad 4096 against the mean of 4 Radiance runs: mean relative error
 // within 3%, 90% within 3 standard deviations of the difference.
 TEST_F(GoldenPrism, GridAb1) {
-  render::RenderSettings st;
-  st.ab = 1;
-  st.aa = 0;
-  st.ad = 4096;
-  st.lw = 1e-5;
-  st.irradiance_I = true;
+  render::RenderSettings st = grid_ab1_settings();
   auto ours = mean_run("prism.oct", "scenes/prism_grid.pts", st, 4);
   auto ref = lums("results/prism_grid_ab1.txt");
   auto sd = lums("results/prism_grid_ab1_sd.txt");

@@ -2,6 +2,7 @@
 // golden_medium): mean luminances of repeated renders through the library and through rpict.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -74,10 +75,10 @@ inline std::vector<double> mean_view(const std::string& options, const std::stri
   for (int k = 0; k < reps; ++k) {
     fs::path out = fs::temp_directory_path() /
                    ("radcl-view-" + std::to_string(::getpid()) + "-" + std::to_string(k) + ".hdr");
-    int rc = run_command("cd " + data("scenes") + " && RADCL_SEED=" + std::to_string(k + 1) + " " +
-                             bin_dir() + "/rpict -u+ " + options + " -o " + out.string() + " " +
-                             octree,
-                         log);
+    int rc =
+        run_command("cd " + data("scenes") + " && RADCL_SEED=" + std::to_string(k + 1) + " " +
+                        bin_dir() + "/rpict -u+ " + options + " -o " + out.string() + " " + octree,
+                    log);
     if (rc != 0) return {};
     image::Picture pic = image::read_picture(out.string());
     fs::remove(out);
@@ -100,6 +101,67 @@ inline std::vector<double> picture_luminance(const std::string& file, int w, int
   for (const auto& c : p.colors())
     v.push_back(lum({c[0], c[1], c[2]}));
   return v;
+}
+
+// The reference's settings (shared/reference/README.md): camera rays at -ab 0 (-dj 0 -ds 0.02
+// -dt 0 -dc 1 -ss 1 -st 0.01), camera rays at -ab 1 -aa 0 -ad 2048 -lw 1e-5, sensors (-I) at
+// -ab 1 -aa 0 -ad 4096 -lw 1e-5.
+inline render::RenderSettings ab0_settings() {
+  render::RenderSettings st;
+  st.ab = 0;
+  st.dj = 0;
+  st.ds = 0.02;
+  st.dt = 0;
+  st.dc = 1;
+  st.ss = 1;
+  st.st = 0.01;
+  return st;
+}
+inline render::RenderSettings aa0_settings() {
+  render::RenderSettings st;
+  st.ab = 1;
+  st.aa = 0;
+  st.ad = 2048;
+  st.lw = 1e-5;
+  return st;
+}
+inline render::RenderSettings grid_ab1_settings() {
+  render::RenderSettings st = aa0_settings();
+  st.ad = 4096;
+  st.irradiance_I = true;
+  return st;
+}
+
+// Per-ray agreement of camera rays with the mean of Radiance's runs: rays the reference finds
+// noiseless (sd 0) within 1e-4, the others within 3 standard deviations times `spread`
+// (sqrt(1/our runs + 1/theirs) for the standard error of the difference of the two means).
+struct RayAgreement {
+  int quiet = 0, quiet_ok = 0, noisy = 0, noisy_ok = 0;
+};
+inline RayAgreement ray_agreement(const std::vector<double>& ours, const std::vector<double>& ref,
+                                  const std::vector<double>& sd, double spread) {
+  RayAgreement a;
+  for (std::size_t i = 0; i < ref.size() && i < ours.size(); ++i) {
+    double d = std::fabs(ours[i] - ref[i]);
+    if (sd[i] == 0) {
+      ++a.quiet;
+      a.quiet_ok += d <= 1e-4 * std::fabs(ref[i]) + 1e-9;
+    } else {
+      ++a.noisy;
+      a.noisy_ok += d <= 3.0 * sd[i] * spread;
+    }
+  }
+  return a;
+}
+
+// The median relative error over the rays the reference lights.
+inline double median_error(const std::vector<double>& ours, const std::vector<double>& ref) {
+  std::vector<double> err;
+  for (std::size_t i = 0; i < ref.size() && i < ours.size(); ++i)
+    if (ref[i] > 0) err.push_back(std::fabs(ours[i] - ref[i]) / ref[i]);
+  if (err.empty()) return 0;
+  std::nth_element(err.begin(), err.begin() + err.size() / 2, err.end());
+  return err[err.size() / 2];
 }
 
 } // namespace radcl::test::golden

@@ -332,7 +332,8 @@ TEST(OctreeReader, EveryReferenceOctreeLoads) {
                           {"aniso.oct", 30, false},
                           {"prism.oct", 24, false},
                           {"mist.oct", 33, false},
-                          {"mist_nomist.oct", 20, false}};
+                          {"mist_nomist.oct", 20, false},
+                          {"bsdf.oct", 117, false}};
   std::size_t seen = 0;
   for (const auto& e : all) {
     SCOPED_TRACE(e.file);

@@ -20,9 +20,13 @@ bool is_aniso_material(rc_object_type t);
 inline bool is_prism_material(rc_object_type t) {
   return t == RC_OBJ_PRISM1 || t == RC_OBJ_PRISM2;
 }
+// Whether t is BSDF or aBSDF (a record of their thickness, up vector and XML file's tables).
+inline bool is_bsdf_material(rc_object_type t) {
+  return t == RC_OBJ_BSDF || t == RC_OBJ_ABSDF;
+}
 // Whether materials of type t carry a function record.
 inline bool has_func_record(rc_object_type t) {
-  return is_func_material(t) || is_aniso_material(t) || is_prism_material(t);
+  return is_func_material(t) || is_aniso_material(t) || is_prism_material(t) || is_bsdf_material(t);
 }
 
 } // namespace radcl::render

@@ -84,6 +84,12 @@ private:
   std::uint32_t request_brdf(const std::string& name, int nargs, const std::string& context,
                              const std::string& where);
   std::string brdf_source() const;
+  // BSDF and aBSDF (src/render/bsdf_materials.cpp): their thickness and up-vector expressions,
+  // and their XML file's device tables (packed into `args` once per file).
+  std::vector<std::uint32_t> compile_bsdf(const scene::Object& o, const std::string& where,
+                                          std::vector<float>& args, std::size_t& transform);
+  std::array<std::uint32_t, 4> bsdf_file(const std::string& file, const std::string& where,
+                                         std::vector<float>& args);
 
   std::array<double, 3> centre_;
   std::unique_ptr<calc::Program> program_;
@@ -95,6 +101,7 @@ private:
   std::vector<std::pair<std::string, int>> fnames_; // rc_pattern_fcall number -> (function, n)
   std::map<std::string, std::pair<std::uint32_t, std::size_t>> data_; // file -> (offset, dims)
   std::map<std::string, std::array<std::uint32_t, 3>> pictures_;      // file -> channel offsets
+  std::map<std::string, std::array<std::uint32_t, 4>> bsdf_files_;    // file -> table offsets
   TextPatterns text_;
   bool brdf_used_ = false;
   std::map<std::tuple<std::string, int, std::string>, std::uint32_t> bids_; // (name, n, ctx)
