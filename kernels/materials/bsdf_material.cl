@@ -36,12 +36,20 @@ typedef struct rc_bsdf_hit {
   int mode; /* RC_BSDF_DIR_* of the direct call under way */
 } rc_bsdf_hit;
 
-/* CIE XYZ to Radiance's RGB (its standard primaries, equal-energy white), negatives clipped. */
+/* CIE XYZ to Radiance's RGB (its standard primaries, equal-energy white); a colour outside the
+ * gamut is desaturated towards the grey of its Y until no component is negative (Radiance's
+ * clipgamut in cie_rgb). */
 static inline float3 rc_bsdf_rgb(float3 c) {
   float3 rgb = (float3)(2.5653128f * c.x - 1.1668496f * c.y - 0.3984632f * c.z,
                         -1.0221082f * c.x + 1.9782866f * c.y + 0.0438216f * c.z,
                         0.0747244f * c.x - 0.2519396f * c.y + 1.1772152f * c.z);
-  return fmax(rgb, (float3)(0.0f));
+  if (!(c.y > 0.0f)) return (float3)(0.0f);
+  if (rgb.x >= 0.0f && rgb.y >= 0.0f && rgb.z >= 0.0f) return rgb;
+  float t = 1.0f;
+  if (rgb.x < 0.0f) t = fmin(t, c.y / (c.y - rgb.x));
+  if (rgb.y < 0.0f) t = fmin(t, c.y / (c.y - rgb.y));
+  if (rgb.z < 0.0f) t = fmin(t, c.y / (c.y - rgb.z));
+  return fmax((float3)(c.y) + t * (rgb - (float3)(c.y)), (float3)(0.0f));
 }
 
 static inline float3 rc_bsdf_local(const rc_bsdf_hit* b, float3 v) {

@@ -13,13 +13,17 @@
 #include "radcl/scene/raypath.h"
 #include "radcl/util/error.h"
 
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <numbers>
 
 namespace radcl::render {
 namespace {
 
 constexpr std::size_t kRecordFloats = sizeof(rc_bsdf) / sizeof(float);
 constexpr std::size_t kCompFloats = sizeof(rc_bsdf_comp) / sizeof(float);
+constexpr double kPi = std::numbers::pi;
 
 // Pads `args` to a multiple of 4 floats: the records hold float4s.
 void align16(std::vector<float>& args) {
@@ -33,6 +37,23 @@ template <class T> void append_records(std::vector<float>& args, const std::vect
   if (!recs.empty()) std::memcpy(args.data() + at, recs.data(), recs.size() * sizeof(T));
 }
 
+// Radiance's check of a loaded file: a side that scatters more than 101% of the light it gets
+// (its Lambertian part plus the residual's largest directional total) is worth a warning.
+void warn_over_unity(const BsdfTables& t, const std::string& file) {
+  std::string name = std::filesystem::path(file).stem().string();
+  const char* what[4] = {"front reflection", "rear reflection", "front transmission",
+                         "back transmission"};
+  const rc_bsdf& f = t.files.at(0);
+  for (int p = 0; p < 4; ++p) {
+    double amt = kPi * f.lamb[p].y;
+    if (f.comp[p] != RC_NONE) amt += t.comps[f.comp[p]].max_hemi;
+    if (amt <= 1.01) continue;
+    char pct[32];
+    std::snprintf(pct, sizeof pct, "%.1f%%", amt * 100);
+    warning("BSDF \"" + name + "\" has " + pct + " " + what[p]);
+  }
+}
+
 } // namespace
 
 // Offsets in `args` of the file's record, its components, its float and its int array.
@@ -44,6 +65,7 @@ std::array<std::uint32_t, 4> PatternCompiler::bsdf_file(const std::string& file,
   if (path.empty()) throw FatalError(where + ": cannot find BSDF file \"" + file + "\"");
   BsdfTables t;
   t.add(bsdf::read_bsdf_xml(path));
+  warn_over_unity(t, file);
   static_assert(kRecordFloats % 4 == 0 && kCompFloats % 4 == 0, "16-byte records");
   std::array<std::uint32_t, 4> off{};
   align16(args);
