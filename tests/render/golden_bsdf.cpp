@@ -36,21 +36,25 @@ std::vector<double> radiance_mean(const std::string& stem, int runs) {
   return mean;
 }
 
-// rtrace's output for `rays` on a scene written to a temporary folder (files: name, text).
-std::string run_scene(const std::vector<std::pair<std::string, std::string>>& files,
+// rtrace's output for `rays` on a scene written to a temporary folder (files: name, text; "@DIR@"
+// in a text stands for that folder), run in tests/data/scenes, where the XML files are: RAYPATH
+// is left as the caller has it (radcl's own library, or Radiance's, must stay on it).
+std::string run_scene(std::vector<std::pair<std::string, std::string>> files,
                       const std::string& options, const std::string& rays, int* rc) {
   fs::path dir = fs::temp_directory_path() / ("radcl-bsdf-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  for (const auto& [name, text] : files) {
+  for (auto& [name, text] : files) {
+    for (std::size_t at; (at = text.find("@DIR@")) != std::string::npos;)
+      text.replace(at, 5, dir.string());
     std::FILE* f = std::fopen((dir / name).c_str(), "w");
     if (!f) continue;
     std::fputs(text.c_str(), f);
     std::fclose(f);
   }
   std::string out;
-  *rc = test::run_command("cd " + dir.string() + " && RAYPATH=.:" + test::data("scenes") +
-                              " && export RAYPATH && printf '" + rays + "' | " + test::bin_dir() +
-                              "/rtrace -h " + options + " scene.rad",
+  *rc = test::run_command("cd " + test::data("scenes") + " && printf '" + rays + "' | " +
+                              test::bin_dir() + "/rtrace -h " + options + " " +
+                              (dir / "scene.rad").string(),
                           &out);
   fs::remove_all(dir);
   return out;
@@ -193,7 +197,7 @@ TEST(GoldenBsdf, BadArgumentsAreFatal) {
     EXPECT_EQ(out.find("internal error"), std::string::npos) << out;
   };
   fails("void BSDF m\n6 0 nowhere.xml 0 0 1 .\n0\n0", "nowhere.xml");
-  fails("void BSDF m\n6 0 bad.xml 0 0 1 .\n0\n0", "bad.xml");
+  fails("void BSDF m\n6 0 @DIR@/bad.xml 0 0 1 .\n0\n0", "bad.xml");
   fails("void BSDF m\n5 0 film_t3.xml 0 0 1\n0\n0", "\"m\"");
   fails("void aBSDF m\n5 film_t3.xml 0 0 1 .\n0\n2 .1 .1", "\"m\"");
   fails("void aBSDF m\n5 film_t3.xml 0 0 1 nowhere.cal\n0\n0", "nowhere.cal");
