@@ -114,9 +114,25 @@ typedef struct rc_ray {
   float dist0;   /* length of the ray tree from the primary's start to this ray's origin (the
                     sum of its ancestors' segments): patterns see T = (dist0 + t) x S, as
                     Radiance's raydist() sums r->rot up the parent chain. 0 for a primary. */
-  float albedo_r, albedo_g, albedo_b; /* scattering albedo of its medium (-ma in the global one,
-                                         0 inside a dielectric) */
+  rc_u32 medium;  /* where the scattering albedo of its medium comes from: RC_MEDIUM_GLOBAL
+                     (-ma), RC_MEDIUM_CLEAR (none: inside a dielectric), else the args offset of a
+                     mist's albedo (rgb) */
+  float gecc;     /* scattering eccentricity of its medium (-mg, or a mist's) */
+  rc_u32 slights; /* mist: the listed sources that scatter into it, one bit per entry of the
+                     scene's table (rc_params.mist) */
 } rc_ray;
+
+#define RC_MEDIUM_GLOBAL 0xFFFFFFFFu
+#define RC_MEDIUM_CLEAR 0xFFFFFFFEu
+/* A mist material's arguments as compiled: extinction (rgb, 0 without), albedo (rgb), g, the
+ * count of real arguments given, and its source list as a bit set of rc_params.mist's table. */
+#define RC_MIST_ALBEDO 3
+#define RC_MIST_GECC 6
+#define RC_MIST_NREALS 7
+#define RC_MIST_MASK 8
+#define RC_MIST_NARGS 9
+/* Source-scattering samples per source and ray segment at most (Radiance's MAXSSAMP). */
+#define RC_MIST_MAXSAMP 16
 
 /* rc_ray.cell of the first samples of a hemisphere whose -as super-sampling the host decides
  * (Radiance's ambsupersamp): which of the ray's hemispheres, the super-sample budget and the
@@ -253,10 +269,12 @@ typedef struct rc_shadow {
   rc_float4 org;     /* w = tmin */
   rc_float4 dir;     /* w = distance to the source sample (tmax; large for distant) */
   rc_float4 contrib; /* rgb to add, w unused */
-  rc_float4 cext;    /* extinction of the medium the shadow ray travels in (rgb), w unused */
+  rc_float4 cext;    /* extinction of the medium the shadow ray travels in (rgb); w: the bits of
+                        its albedo's source (rc_ray.medium): it loses what is not scattered */
   rc_u32 primary;
   rc_u32 source; /* source index: the ray counts only if it reaches this source unblocked */
-  rc_u32 pad0;   /* -dt estimate records: the number of tested requests before it */
+  rc_u32 pad0;   /* -dt estimate records: the number of tested requests before it; a request:
+                    its ray's mist sources (rc_ray.slights), which mist boundaries change */
   rc_u32 crtype; /* the ambient/specular ancestry bits of the ray it leaves (shade.cl's RC_CR_*) */
   rc_u32 clip;   /* antimatter state of the surface point it leaves (as rc_ray) */
   rc_u32 inside;
@@ -288,6 +306,10 @@ typedef struct rc_params {
                                  sampled */
   rc_float4 medium;           /* the global medium: -me extinction (rgb), w = -mg */
   rc_float4 albedo;           /* -ma scattering albedo (rgb), w = -ms */
+  rc_u32 mist;                /* args offset of the mist sources' table: per bit of
+                                 rc_ray.slights, a source index (RC_NONE: unknown), then the
+                                 bit set of the known ones; RC_NONE without mist */
+  rc_u32 pad1, pad2, pad3;
 } rc_params;
 
 /* An irradiance-cache record as the lookup kernel reads it (ambient-file.md §3; Radiance's
@@ -371,7 +393,7 @@ typedef struct rc_rng_key {
   F(rc_ray, org)                                                                                                       \
   F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags) F(                               \
       rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip)                      \
-      F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, albedo_b) F(rc_hit, pos) F(                             \
+      F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, medium) F(rc_ray, gecc) F(rc_ray, slights) F(rc_hit, pos) F(                             \
           rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim) F(rc_hit, source)                              \
           F(rc_hit, front) F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(                        \
               rc_surface, object) F(rc_surface, flags) F(rc_surface, clip) F(rc_surface, slots)                        \
@@ -413,7 +435,7 @@ typedef struct rc_rng_key {
                                                       F(rc_params, nsources) F(                                        \
                                                           rc_params,                                                   \
                                                           irradiance_material) F(rc_params, ad)                        \
-                                                          F(rc_params, as) F(rc_params, amb) F(rc_params, medium) F(rc_params, albedo) F(                        \
+                                                          F(rc_params, as) F(rc_params, amb) F(rc_params, medium) F(rc_params, albedo) F(rc_params, mist) F(                        \
                                                               rc_amb_record,                                           \
                                                               pos) F(rc_amb_record,                                    \
                                                                      nrm) F(rc_amb_record, udir)                       \

@@ -13,10 +13,13 @@ typedef struct rc_out {
   float3 immediate; /* contributions that need no shadow test (emission, ambient value) */
   float3 cext;      /* medium of the rays this hit spawns */
 #ifdef RADCL_HAS_MEDIUM
-  float3 albedo; /* its scattering albedo (Radiance's r->albedo) */
+  uint medium;   /* where its scattering albedo comes from (rc_ray.medium) */
+  float3 albedo; /* that albedo (Radiance's r->albedo) */
+  float gecc;    /* its scattering eccentricity (r->gecc) */
+  uint slights;  /* the mist sources that scatter into those rays (r->slights) */
   float3 av;     /* the ambient value it scatters into rays (-av) */
 #endif
-  float wfac;       /* extinction estimate on their weight (Radiance's rayorigin) */
+  float wfac; /* extinction estimate on their weight (Radiance's rayorigin) */
   /* -as second pass: per-division super-sample counts of hemisphere `super_which` of this
    * ray ([0] = which, then ns * ns counts); only those samples are written. Else null. */
   global const uint* super;
@@ -46,6 +49,9 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->cext = (float3)(0.0f);
 #ifdef RADCL_HAS_MEDIUM
   o->albedo = o->av = (float3)(0.0f);
+  o->medium = RC_MEDIUM_CLEAR;
+  o->gecc = 0.0f;
+  o->slights = 0u;
 #endif
   o->wfac = 1.0f;
   o->super = 0;
@@ -104,13 +110,14 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
     s.org = rc_leave_org(o, org, dir, tmin);
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
+    /* The medium the shadow ray starts in (rc_shadow_ext: what it loses). */
 #ifdef RADCL_HAS_MEDIUM
-    /* The medium the shadow ray starts in; what it scatters is lost to the source. */
-    s.cext = (float4)(o->cext * ((float3)(1.0f) - o->albedo), 0.0f);
+    s.cext = (float4)(o->cext, as_float(o->medium));
+    s.pad0 = o->slights;
 #else
-    s.cext = (float4)(o->cext, 0.0f); /* the medium the shadow ray starts in */
-#endif
+    s.cext = (float4)(o->cext, as_float(RC_MEDIUM_CLEAR));
     s.pad0 = 0;
+#endif
     s.crtype = rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR);
     s.dist0 = o->dist;
     s.sdist0 = 0.0f;
@@ -204,11 +211,13 @@ static inline void rc_emit_ray(rc_out* o, const rc_ray* parent, float3 org, floa
     r.cext_b = o->cext.z;
     r.dist0 = o->dist;
 #ifdef RADCL_HAS_MEDIUM
-    r.albedo_r = o->albedo.x;
-    r.albedo_g = o->albedo.y;
-    r.albedo_b = o->albedo.z;
+    r.medium = o->medium;
+    r.gecc = o->gecc;
+    r.slights = o->slights;
 #else
-    r.albedo_r = r.albedo_g = r.albedo_b = 0.0f;
+    r.medium = RC_MEDIUM_CLEAR;
+    r.gecc = 0.0f;
+    r.slights = 0u;
 #endif
     o->spawned[o->nspawn] = r;
   }

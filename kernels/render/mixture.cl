@@ -85,7 +85,7 @@ static void rc_shade_mixture(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit
   /* -i: Radiance's raytirrad makes a mixture an irradiance meter whole, whatever its sides. */
   if ((P->flags & RC_PF_IRRAD_I) && (kind == RC_RAY_PRIMARY || kind == RC_RAY_TRANSMITTED) &&
       r.depth == 0 && !(rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR)) && h.pos.w >= 0.0f) {
-    rc_apply_medium(o, &r, o->cext, h.pos.w);
+    rc_apply_medium(S, o, &r, o->cext, h.pos.w, key);
     rc_material m = S->materials[P->irradiance_material];
     int flat = surf->type == RC_OBJ_POLYGON || surf->type == RC_OBJ_RING;
     rc_shade_normal(S, o, &m, &r, &h, h.front ? h.nrm.xyz : -h.nrm.xyz, flat, key);
@@ -114,7 +114,7 @@ static void rc_shade_mixture(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit
   pr.coef *= pass;
   o->cext = cext;
   o->wfac = 1.0f;
-  rc_apply_medium(o, &pr, o->cext, h.pos.w);
+  rc_apply_medium(S, o, &pr, o->cext, h.pos.w, key);
   if (h.pos.w >= 0.0f) rc_pass(o, &pr, &h, &S->params, key);
 }
 

@@ -30,9 +30,6 @@ static inline uint rc_crtype(uint flags) {
 static inline float3 rc_ray_medium(const rc_ray* r) {
   return (float3)(r->cext_r, r->cext_g, r->cext_b);
 }
-static inline float3 rc_shadow_medium(const rc_shadow* s) {
-  return s->cext.xyz;
-}
 /* Transmittance over a path of length t (t < 0: to infinity), as Radiance's
  * rayparticipate() without scattering. */
 static inline float rc_ext1(float c, float t) {
@@ -83,6 +80,27 @@ typedef struct rc_scene_args {
   rc_params params;               /* a private copy: read on every sample */
 } rc_scene_args;
 
+/* The scattering albedo of a ray's medium from where it comes (rc_ray.medium). */
+static inline float3 rc_medium_albedo(const rc_scene_args* S, uint medium) {
+#ifdef RADCL_HAS_MEDIUM
+  if (medium == RC_MEDIUM_GLOBAL) return S->params.albedo.xyz;
+  if (medium == RC_MEDIUM_CLEAR) return (float3)(0.0f);
+  global const float* a = S->args + medium;
+  return (float3)(a[0], a[1], a[2]);
+#else
+  return (float3)(0.0f);
+#endif
+}
+/* What a shadow ray in medium (cext, medium) loses per unit length: what is absorbed; the
+ * scattered part is not counted as lost on the way to a source (Radiance's rayparticipate). */
+static inline float3 rc_shadow_ext(const rc_scene_args* S, float3 cext, uint medium) {
+#ifdef RADCL_HAS_MEDIUM
+  return cext * ((float3)(1.0f) - rc_medium_albedo(S, medium));
+#else
+  return cext;
+#endif
+}
+
 #ifdef RADCL_HAS_AMBCACHE
 #include "render/ambient_cache.cl"
 #endif
@@ -108,10 +126,13 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   o->cext = rc_ray_medium(&r);
   o->newclip = r.clip;
 #ifdef RADCL_HAS_MEDIUM
-  o->albedo = (float3)(r.albedo_r, r.albedo_g, r.albedo_b);
+  o->medium = r.medium;
+  o->albedo = rc_medium_albedo(S, r.medium);
+  o->gecc = r.gecc;
+  o->slights = r.slights;
   o->av = P->av.xyz;
   if (h.surface == RC_NONE) { /* nothing hit: what the medium scatters into the ray */
-    rc_apply_medium(o, &r, o->cext, -1.0f);
+    rc_apply_medium(S, o, &r, o->cext, -1.0f, key);
     return;
   }
 #endif
@@ -138,7 +159,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   invisible |= (surf.clip & r.clip) != 0u; /* clipped by an antimatter the ray is inside */
 #endif
   if (invisible) {
-    rc_apply_medium(o, &r, o->cext, h.pos.w);
+    rc_apply_medium(S, o, &r, o->cext, h.pos.w, key);
     if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
     return;
   }
@@ -149,7 +170,7 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
     o->newclip = rc_antimatter_clip(a, r.clip, h.front);
     if (h.pos.w < 0.0f) return;
     if (!rc_antimatter_shades(&mat, a, r.inside)) {
-      rc_apply_medium(o, &r, o->cext, h.pos.w);
+      rc_apply_medium(S, o, &r, o->cext, h.pos.w, key);
       rc_pass(o, &r, &h, P, key);
       return;
     }

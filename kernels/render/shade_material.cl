@@ -34,6 +34,9 @@ static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, co
 
 #include "materials/raynormal.cl"
 #include "render/direct.cl"
+#ifdef RADCL_HAS_MIST
+#include "render/mist.cl"
+#endif
 
 /* Continues a ray unchanged past a surface it does not see (Radiance's raytrans: a TRANS ray,
  * no weight test, no reflection level). */
@@ -299,7 +302,9 @@ static void rc_shade_dielectric(const rc_scene_args* S, rc_out* o, const rc_mate
 #ifdef RADCL_HAS_MEDIUM
     /* Out of a dielectric into the global medium, which scatters; into one, absorbing only. */
     float3 keep_albedo = o->albedo;
-    o->albedo = f.to_global ? P->albedo.xyz : (float3)(0.0f);
+    uint keep_medium = o->medium;
+    o->medium = f.to_global ? RC_MEDIUM_GLOBAL : RC_MEDIUM_CLEAR;
+    o->albedo = rc_medium_albedo(S, o->medium);
     if (f.to_global) o->cext = P->medium.xyz;
 #endif
     rc_spawn(o, r, h->pos.xyz, f.tdir, (float3)(f.trans), RC_RAY_TRANSMITTED, P->spec.z, P, key, 6,
@@ -307,6 +312,7 @@ static void rc_shade_dielectric(const rc_scene_args* S, rc_out* o, const rc_mate
     o->cext = keep;
 #ifdef RADCL_HAS_MEDIUM
     o->albedo = keep_albedo;
+    o->medium = keep_medium;
 #endif
     if (curved && fabs(f.ratio - 1.0f) > RC_FTINY) rc_relabel_child(o, before, 0u, RC_RAY_THROUGH);
   }
@@ -340,8 +346,11 @@ static inline float3 rc_hit_medium(const rc_scene_args* S, float3 carried, const
 static inline void rc_hit_albedo(const rc_scene_args* S, rc_out* o, const rc_material* m, float3 d,
                                  const rc_hit* h) {
 #if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
-  if (rc_is_dielectric(m->type) && rc_refract(m->type, S->args + m->args, d, h->nrm.xyz).set_medium)
+  if (rc_is_dielectric(m->type) &&
+      rc_refract(m->type, S->args + m->args, d, h->nrm.xyz).set_medium) {
     o->albedo = (float3)(0.0f);
+    o->medium = RC_MEDIUM_CLEAR;
+  }
 #endif
 }
 #endif
@@ -349,12 +358,16 @@ static inline void rc_hit_albedo(const rc_scene_args* S, rc_out* o, const rc_mat
 /* Absorption along the ray up to its hit scales everything the ray brings back; children
  * inherit the medium and Radiance's estimate of it on their weight. In a scattering medium the
  * ray also gains the ambient value scattered into it (Radiance's rayparticipate()). */
-static inline void rc_apply_medium(rc_out* o, rc_ray* r, float3 cext, float t) {
+static inline void rc_apply_medium(const rc_scene_args* S, rc_out* o, rc_ray* r, float3 cext,
+                                   float t, rc_rng_key key) {
   o->cext = cext;
   if (rc_max3(cext) <= 0.0f) return;
 #ifdef RADCL_HAS_MEDIUM
   float3 e = rc_ext(cext, t);
   o->immediate += r->coef.xyz * o->albedo * o->av * ((float3)(1.0f) - e);
+#ifdef RADCL_HAS_MIST
+  if (o->slights && t >= 0.0f) rc_mist_scatter(S, o, r, cext, t, key);
+#endif
   r->coef.xyz *= e;
 #else
   r->coef.xyz *= rc_ext(cext, t);
@@ -365,7 +378,7 @@ static inline void rc_apply_medium(rc_out* o, rc_ray* r, float3 cext, float t) {
 
 static inline int rc_transparent(uint type) {
   return type == RC_OBJ_TRANS || type == RC_OBJ_GLASS || type == RC_OBJ_DIELECTRIC ||
-         type == RC_OBJ_INTERFACE;
+         type == RC_OBJ_INTERFACE || type == RC_OBJ_MIST;
 }
 
 /* Shades a hit with material `mat` (after the surface's visibility and antimatter rules). */
@@ -382,7 +395,7 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
   if (mat.type == RC_OBJ_MIRROR && mat.alt != RC_NONE &&
       !(h.front && (rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR)))) {
     if (mat.alt == RC_ALT_VOID) {
-      rc_apply_medium(o, &r, o->cext, h.pos.w);
+      rc_apply_medium(S, o, &r, o->cext, h.pos.w, key);
       if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);
       return;
     }
@@ -407,11 +420,18 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
   int irrad_i = (P->flags & RC_PF_IRRAD_I) &&
                 (kind == RC_RAY_PRIMARY || kind == RC_RAY_TRANSMITTED) && r.depth == 0 &&
                 !(rc_crtype(r.flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR));
+#ifdef RADCL_HAS_MIST
+  /* A mist boundary changes the medium of the ray going on; -i's meters see through it. */
+  if (mat.type == RC_OBJ_MIST && !irrad_i) {
+    rc_shade_mist(S, o, &r, &h, &mat, key);
+    return;
+  }
+#endif
 #ifdef RADCL_HAS_MEDIUM
   if (!irrad_i) rc_hit_albedo(S, o, &mat, r.dir.xyz, &h);
 #endif
-  rc_apply_medium(o, &r, irrad_i ? o->cext : rc_hit_medium(S, o->cext, &mat, r.dir.xyz, &h),
-                  h.pos.w);
+  rc_apply_medium(S, o, &r, irrad_i ? o->cext : rc_hit_medium(S, o->cext, &mat, r.dir.xyz, &h),
+                  h.pos.w, key);
   float3 coef = r.coef.xyz;
   if (mat.type == RC_OBJ_ILLUM) { /* no alternate */
     if (h.pos.w >= 0.0f) rc_pass(o, &r, &h, P, key);

@@ -15,7 +15,8 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   const rc_params* P = &S->params;
   global const rc_source* src = S->sources + s->source;
   float3 d = s->dir.xyz;
-  float3 cext = rc_shadow_medium(s);
+  float3 cext = s->cext.xyz; /* the medium it travels in: extinction, albedo's source, sources */
+  uint med = as_uint(s->cext.w), slights = s->pad0;
   int distant = src->kind == RC_SRC_DISTANT;
   if (src->flags & RC_SRCF_VIRTUAL) {
     /* Aimed at a source's image: it must meet the mirror's front (within its outline, which
@@ -33,7 +34,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
         float c = rc_redirect(S, &m, h, d, toward, k - 1u, &nd);
         if (!(c > 0.0f)) return RC_SH_BLOCKED;
         float t = h->pos.w;
-        s->contrib.xyz *= c * rc_ext(cext, t);
+        s->contrib.xyz *= c * rc_ext(rc_shadow_ext(S, cext, med), t);
         s->org = (float4)(rc_leave(h->pos.xyz, h->nrm.xyz, nd, P->spec.z), RC_TMIN_OFF);
         s->dist0 += t;
         s->sdist0 += t;
@@ -44,7 +45,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
 #endif
       if (!h->front) return RC_SH_BLOCKED;
       float t = h->pos.w;
-      s->contrib.xyz *= rc_ext(cext, t);
+      s->contrib.xyz *= rc_ext(rc_shadow_ext(S, cext, med), t);
       if (!(src->flags & RC_SRCF_FOLLOW)) return RC_SH_REACHED;
       float3 n = h->nrm.xyz, rd = d - 2.0f * dot(d, n) * n;
       s->org = (float4)(rc_leave(h->pos.xyz, n, rd, P->spec.z), RC_TMIN_OFF);
@@ -58,7 +59,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
     if (distant) {
       if ((state & RC_SH_BENT) && 2.0f * M_PI_F * (1.0f - dot(src->pos.xyz, d)) > src->axis.w)
         return RC_SH_BLOCKED; /* refracted away from the source */
-      s->contrib.xyz *= rc_ext(cext, -1.0f);
+      s->contrib.xyz *= rc_ext(rc_shadow_ext(S, cext, med), -1.0f);
       return RC_SH_REACHED;
     }
     /* Radiance lets an aimed ray that meets nothing count; a traced one that misses not. */
@@ -76,11 +77,12 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   rc_hit flipped = *h;
 #endif
   if (!invisible && !distant && h->surface == src->surface) {
-    s->contrib.xyz *= rc_ext(cext, t);
+    s->contrib.xyz *= rc_ext(rc_shadow_ext(S, cext, med), t);
     return RC_SH_REACHED;
   }
   float3 coef = (float3)(1.0f);
   float3 next_cext = cext;
+  uint next_med = med, next_slights = slights;
   int pass = 1;
   if (!invisible) {
     rc_material m = S->materials[surf.material];
@@ -113,8 +115,17 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
 #ifdef RADCL_HAS_PATTERNS
     if (m.npatterns) rc_apply_patterns(S, &m, d, h, &pcol, &pert);
 #endif
-    cext = rc_hit_medium(S, cext, &m, d, h);
+#if defined(RADCL_HAS_DIELECTRIC) || defined(RADCL_HAS_INTERFACE)
+    if (rc_is_dielectric(m.type)) { /* from inside: it travelled in the dielectric's medium */
+      rc_refraction f = rc_refract(m.type, S->args + m.args, d, h->nrm.xyz);
+      if (f.set_medium) {
+        cext = f.cext_in;
+        med = RC_MEDIUM_CLEAR;
+      }
+    }
+#endif
     next_cext = cext;
+    next_med = med;
     int back_pass = !h->front && !(P->flags & RC_PF_BV);
     float3 n = h->front ? h->nrm.xyz : -h->nrm.xyz;
     global const float* a = S->args + m.args;
@@ -172,13 +183,33 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       if (f.trans <= 0.0f) return RC_SH_BLOCKED; /* total internal reflection */
       coef = (float3)(f.trans);
       next_cext = f.cext_out;
+      next_med = RC_MEDIUM_CLEAR;
 #ifdef RADCL_HAS_MEDIUM
-      if (f.to_global) next_cext = P->medium.xyz * ((float3)(1.0f) - P->albedo.xyz);
+      if (f.to_global) {
+        next_cext = P->medium.xyz;
+        next_med = RC_MEDIUM_GLOBAL;
+      }
 #endif
       if (any(f.tdir != d)) {
         d = f.tdir;
         state |= RC_SH_BENT;
       }
+      break;
+    }
+#endif
+#ifdef RADCL_HAS_MIST
+    case RC_OBJ_MIST: { /* on through, in the medium beyond (mist.cl) */
+      rc_mist_medium in;
+      in.cext = cext;
+      in.medium = med;
+      in.gecc = 0.0f;
+      in.slights = slights;
+      rc_mist_medium out = rc_mist_cross(S, m.args, pcol, h->front, &in);
+      cext = in.cext;
+      med = in.medium;
+      next_cext = out.cext;
+      next_med = out.medium;
+      next_slights = out.slights;
       break;
     }
 #endif
@@ -188,7 +219,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
     }
   }
   if (!pass || rc_max3(coef) <= 0.0f) return RC_SH_BLOCKED;
-  float3 c = s->contrib.xyz * rc_ext(cext, t) * coef;
+  float3 c = s->contrib.xyz * rc_ext(rc_shadow_ext(S, cext, med), t) * coef;
   if (rc_max3(c) <= 0.0f) return RC_SH_BLOCKED;
   s->org = (float4)(rc_leave(h->pos.xyz, h->nrm.xyz, d, P->spec.z), RC_TMIN_OFF);
   /* A straight ray still has the rest of the way to a local source; a bent one goes on until
@@ -196,7 +227,8 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   float rest = (state & RC_SH_BENT) ? INFINITY : s->dir.w - t;
   s->dir = (float4)(d, distant ? s->dir.w : rest);
   s->contrib = (float4)(c, 0.0f);
-  s->cext = (float4)(next_cext, 0.0f);
+  s->cext = (float4)(next_cext, as_float(next_med));
+  s->pad0 = next_slights;
   s->dist0 += t;
   s->sdist0 += t;
 #ifdef RADCL_HAS_ANTIMATTER

@@ -174,9 +174,9 @@ void Renderer::Impl::sample_hemispheres(const std::vector<const rc_ray*>& chosen
     s.cext[0] = m->cext_r;
     s.cext[1] = m->cext_g;
     s.cext[2] = m->cext_b;
-    s.albedo[0] = m->albedo_r;
-    s.albedo[1] = m->albedo_g;
-    s.albedo[2] = m->albedo_b;
+    s.medium = m->medium;
+    s.gecc = m->gecc;
+    s.slights = m->slights;
     std::size_t at = hemis[f].first;
     std::uint32_t id = fr.rec + 1;
     for (int i = 0; i < ns; ++i)

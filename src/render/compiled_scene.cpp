@@ -30,6 +30,7 @@ bool supported_material(rc_object_type t) {
   case RC_OBJ_DIELECTRIC:
   case RC_OBJ_INTERFACE:
   case RC_OBJ_ANTIMATTER:
+  case RC_OBJ_MIST:
     return true;
   default:
     return has_func_record(t);
@@ -81,6 +82,10 @@ public:
           add_surface(pl, static_cast<std::int32_t>(i));
     }
     assign_clip_bits();
+    if (out_.features.has(RC_OBJ_MIST)) { // room for the renderer's table of mist sources
+      out_.mist_table = static_cast<std::uint32_t>(out_.args.size());
+      out_.args.resize(out_.args.size() + kMaxMistSources + 1, 0.0f);
+    }
     if (!patterns_.empty()) {
       out_.features.define("RADCL_HAS_PATTERNS");
       if (patterns_.has_data()) out_.features.define("RADCL_HAS_PATTERN_DATA");
@@ -394,7 +399,9 @@ private:
       alt = RC_ALT_VOID;
     out_.features.add(o.type);
     std::uint32_t id =
-        push_material(o.type, std::vector<float>(o.fargs.begin(), o.fargs.end()), alt);
+        o.type == RC_OBJ_MIST
+            ? push_material(o.type, mist_arguments(o, out_.mist_sources), alt)
+            : push_material(o.type, std::vector<float>(o.fargs.begin(), o.fargs.end()), alt);
     if (shading_ && has_func_record(static_cast<rc_object_type>(o.type))) {
       std::uint32_t rec = func_record(sd, obj, nullptr);
       out_.materials[id].func = rec;

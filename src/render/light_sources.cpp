@@ -165,6 +165,7 @@ private:
     }
     if (mat.type == RC_OBJ_SPOTLIGHT && !set_spot(o, mat, s)) return;
     out_.sources.push_back(s);
+    out_.names.push_back(o.name);
   }
 
   // Radiance's makespot() and checkspot(); false when the source is to be skipped.

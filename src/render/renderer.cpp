@@ -18,7 +18,8 @@ namespace {
 device::ProgramSource shade_program(const CompiledScene& cs, const RenderSettings& st) {
   device::FeatureSet f = cs.features;
   if (uses_cache(st)) f.define("RADCL_HAS_AMBCACHE");
-  if (has_medium(st)) f.define("RADCL_HAS_MEDIUM");
+  // Rays in mist travel in a medium even where no global one is set.
+  if (has_medium(st) || cs.features.has(RC_OBJ_MIST)) f.define("RADCL_HAS_MEDIUM");
   return f.program({"render/shade.cl"});
 }
 
@@ -88,10 +89,9 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
     cache_local.push_back(local_record(a));
   building = uses_cache(st) && st.make_records && st.trace == RenderSettings::Trace::Off;
   p.amb = f4(st.aa, st.ambient_min_radius, 0, 0);
-  if (has_medium(st)) {
-    p.medium = f4(st.me[0], st.me[1], st.me[2], st.mg);
-    p.albedo = f4(st.ma[0], st.ma[1], st.ma[2], st.ms);
-  }
+  p.medium = f4(st.me[0], st.me[1], st.me[2], st.mg);
+  p.albedo = f4(st.ma[0], st.ma[1], st.ma[2], st.ms);
+  p.mist = RC_NONE;
   base = p;
   upload_cache();
   p = base;
@@ -107,6 +107,12 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
       cs.sources);
   upload_sources();
   p.nsources = static_cast<std::uint32_t>(cs.sources.sources.size());
+  if (cs.mist_table != RC_NONE) { // the mists' sources, now that the virtual ones exist
+    const std::vector<std::uint32_t> table =
+        mist_source_table(cs.mist_sources, cs.sources, cs.surface_names);
+    args.write(table.data(), table.size() * sizeof(std::uint32_t), cs.mist_table * sizeof(float));
+    p.mist = cs.mist_table;
+  }
   params.write(&p, sizeof p);
   base = p;
   stats = RenderStats{}; // the pretest's rays are not the caller's

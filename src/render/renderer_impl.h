@@ -252,7 +252,10 @@ struct Renderer::Impl {
     std::uint32_t flags = RC_RAY_PRIMARY, depth = 0, ambient_depth = 0;
     float weight = 1;
     float dist0 = 0; // the ray tree's length before it: the record's point is its parent's hit
-    float cext[3] = {0, 0, 0}, albedo[3] = {0, 0, 0}; // the medium it starts in (its parent's)
+    float cext[3] = {0, 0, 0};               // the medium it starts in (its parent's): extinction,
+    std::uint32_t medium = RC_MEDIUM_GLOBAL; // albedo's source,
+    float gecc = 0;                          // eccentricity
+    std::uint32_t slights = 0;               // and mist sources
   };
   bool building = false;            // misses become records
   bool collecting = false;          // this pass reports misses (amb.w = 1)

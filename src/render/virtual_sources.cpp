@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -408,6 +409,8 @@ private:
       sh.org = f4(q, geom_.epsilon());
       sh.dir = f4(dir, dist);
       sh.contrib = rc_float4{1, 1, 1, 0};
+      const std::uint32_t global = RC_MEDIUM_GLOBAL; // as a primary's (its extinction: none)
+      std::memcpy(&sh.cext.w, &global, sizeof global);
       sh.primary = 0;
       sh.source = sn;
       rays.push_back(sh);

@@ -84,7 +84,6 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   if (tree) tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
   const bool in_medium = has_medium(settings);
   const Vec3d medium = in_medium ? settings.me : Vec3d{0, 0, 0};
-  const Vec3d albedo = in_medium ? settings.ma : Vec3d{0, 0, 0};
   for_rows(prim.size(), [&](std::size_t i) {
     Vec3d d = unit(prim[i].dir);
     Vec3d o = prim[i].org;
@@ -97,21 +96,21 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     r.primary = prim[i].id != RC_NONE ? prim[i].id : static_cast<std::uint32_t>(first_index + i);
     r.flags = RC_RAY_PRIMARY;
     r.tally = static_cast<std::uint32_t>(i);
-    r.dist0 = 0;           // patterns' T counts from the primary's start
+    r.dist0 = 0;                              // patterns' T counts from the primary's start
     r.cext_r = static_cast<float>(medium[0]); // primaries start in the global medium
     r.cext_g = static_cast<float>(medium[1]);
     r.cext_b = static_cast<float>(medium[2]);
-    r.albedo_r = static_cast<float>(albedo[0]);
-    r.albedo_g = static_cast<float>(albedo[1]);
-    r.albedo_b = static_cast<float>(albedo[2]);
+    r.medium = RC_MEDIUM_GLOBAL;
+    r.gecc = static_cast<float>(settings.mg);
+    r.slights = 0;
     if (!starts.empty()) { // a hemisphere sample of a record being made
       const RayStart& st = starts[first_index + i];
       r.cext_r = st.cext[0];
       r.cext_g = st.cext[1];
       r.cext_b = st.cext[2];
-      r.albedo_r = st.albedo[0];
-      r.albedo_g = st.albedo[1];
-      r.albedo_b = st.albedo[2];
+      r.medium = st.medium;
+      r.gecc = st.gecc;
+      r.slights = st.slights;
       r.flags = st.flags;
       r.depth = st.depth;
       r.ambient_depth = st.ambient_depth;

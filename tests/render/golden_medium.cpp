@@ -141,14 +141,3 @@ TEST(GoldenMedium, ViewMeanAndReducedPicture) {
   EXPECT_GE(st.blocks, 0.8 * st.lit);
   EXPECT_LE(st.rms, 0.05);
 }
-
-// Mist objects are not rendered yet: a scene with one stops, with or without -me.
-TEST(GoldenMedium, MistMaterialIsFatal) {
-  std::string log;
-  int rc = test::run_command("cd " + test::data("scenes") + " && echo '3 2 1.5 0 1 0' | " +
-                                 test::bin_dir() + "/rtrace -h -me .03 .03 .04 mist.oct",
-                             &log);
-  EXPECT_NE(rc, 0);
-  EXPECT_NE(log.find("\"mist\""), std::string::npos) << log;
-  EXPECT_EQ(log.find("internal error"), std::string::npos) << log;
-}

@@ -12,6 +12,7 @@
 #include "radcl/device_types.h"
 #include "radcl/geometry/scene_geometry.h"
 #include "radcl/render/light_sources.h"
+#include "radcl/render/mist_materials.h"
 #include "radcl/scene/loader.h"
 
 namespace radcl::render {
@@ -33,6 +34,11 @@ struct CompiledScene {
 
   // Compiled surface of a geometry hit.
   std::uint32_t surface_of(const geometry::Hit& hit) const;
+
+  // mist: the source names the mists list (a bit of rc_ray.slights each) and the args offset
+  // of the table of their source indices, which the renderer fills (RC_NONE: no mist).
+  MistSources mist_sources;
+  std::uint32_t mist_table = RC_NONE;
 
   std::vector<std::uint32_t> placement_base;              // first surface slot per placement
   std::vector<const scene::TriangleMesh*> placement_mesh; // mesh of a mesh placement

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "radcl/device_types.h"
@@ -16,6 +17,7 @@ struct CompiledSources {
   std::vector<rc_source> sources;
   std::vector<rc_float4> verts;   // polygon source vertices (re-centred), referenced by rc_source
   std::vector<rc_mirror> mirrors; // mirrors of virtual sources (virtual_sources.h)
+  std::vector<std::string> names; // object names of the real sources (they come first)
 };
 
 // One rc_source per direct light source of the main scene (scene::is_light_source) and per
