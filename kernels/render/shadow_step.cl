@@ -228,7 +228,9 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
   s->dir = (float4)(d, distant ? s->dir.w : rest);
   s->contrib = (float4)(c, 0.0f);
   s->cext = (float4)(next_cext, as_float(next_med));
+#ifdef RADCL_HAS_MIST
   s->pad0 = next_slights;
+#endif
   s->dist0 += t;
   s->sdist0 += t;
 #ifdef RADCL_HAS_ANTIMATTER

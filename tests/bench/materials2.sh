@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The second-wave material scenes (issue 33; so far `aniso`: plastic2, metal2, trans2, ashik2;
+# The second-wave material scenes (issue 33: `aniso`: plastic2, metal2, trans2, ashik2;
 # `prism`: prism1, prism2, whose prism.cal is Radiance's and is found on RAYPATH: put the
 # reference scenes folder in RADIANCE_LIB; `mist_global`: the global medium -me/-ma/-mg;
-# `bsdf`: BSDF and aBSDF windows and a BSDF tile) timed against Radiance side by side in one
+# `bsdf`: BSDF and aBSDF windows and a BSDF tile; `mist`: mist volumes with source lists, at
+# the reference's -ms 0.05) timed against Radiance side by side in one
 # go: the sensor grid at the default settings
 # (-ab 5 with the cache), the camera rays at -ab 1 -aa 0 -ad 2048 and rpict's reference view
 # (256 x 192, -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1). Radiance's rtrace runs with -n set
@@ -42,7 +43,7 @@ row() { # label radcl-command radiance-command
 # scene: label octree file-prefix extra-options
 for c in "aniso aniso.oct aniso" "prism prism.oct prism" \
   "mist_global mist_nomist.oct mist -me 0.03 0.03 0.04 -ma 0.8 0.8 0.8 -mg 0.3" \
-  "bsdf bsdf.oct bsdf"; do
+  "bsdf bsdf.oct bsdf" "mist mist.oct mist -ms 0.05"; do
   read -r s oct f extra <<< "$c"
   n=$(wc -l < "${f}_grid.pts")
   view="-vf $f.vf -x 256 -y 192 -ab 1 -ad 1024 -as 256 -aa 0.1 -ar 64 -ps 1 $extra"
