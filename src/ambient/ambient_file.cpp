@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "radcl/util/error.h"
@@ -93,6 +94,11 @@ std::vector<AmbientRecord> AmbientFile::open(const std::string& path,
     writable = false;
   }
   if (fd_ < 0) throw FatalError("cannot open ambient file \"" + path + "\"");
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0 || S_ISDIR(st.st_mode)) { // a directory opens read-only
+    close();
+    throw FatalError("bad ambient file \"" + path + "\" (a directory)");
+  }
   try {
     return load(writable, header);
   } catch (...) {

@@ -205,8 +205,16 @@ public:
         if (radiance)
           file = std::make_unique<std::ofstream>(name, std::ios::binary | std::ios::trunc);
       }
-      render_frame(seq, file ? file.get() : (pout.empty() ? &std::cout : nullptr), name, radiance,
-                   recover, progress);
+      try {
+        render_frame(seq, file ? file.get() : (pout.empty() ? &std::cout : nullptr), name, radiance,
+                     recover, progress);
+      } catch (...) { // a picture this run began is complete or absent
+        if (!name.empty() && recover.empty()) {
+          file.reset();
+          std::remove(name.c_str());
+        }
+        throw;
+      }
       recover.clear();
       ++npicts;
     } while (seq++);

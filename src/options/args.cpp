@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -139,6 +140,9 @@ void ArgList::expand(std::size_t i) {
     std::vector<std::string> words;
     if (arg[0] == '@') {
       // As Radiance's wordfile(): words split at white space, quotes kept as they are.
+      std::error_code ec;
+      if (std::filesystem::is_directory(arg.substr(1), ec))
+        throw SystemError("cannot expand '" + arg + "': " + std::strerror(EISDIR));
       errno = 0;
       std::ifstream in(arg.substr(1), std::ios::binary);
       if (arg.size() < 2 || !in) {

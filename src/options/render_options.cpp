@@ -4,6 +4,7 @@
 #include "radcl/util/error.h"
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -14,7 +15,8 @@ constexpr int kMaxPhotonMaps = 6;  // Radiance's NUM_PMAP_TYPES
 constexpr int kDefaultGather = 40; // photons per lookup when -ap gives no bandwidth
 
 bool read_words(const std::string& path, std::vector<std::string>& out) {
-  if (path.empty()) return false;
+  std::error_code ec;
+  if (path.empty() || std::filesystem::is_directory(path, ec)) return false;
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
   std::ostringstream ss;

@@ -23,6 +23,8 @@ bool ends_with(const std::string& s, const std::string& tail) {
 bool is_octree(const std::string& input) {
   if (input.empty() || input[0] == '!') return ends_with(input, ".oct");
   if (ends_with(input, ".oct")) return true;
+  std::error_code ec;
+  if (std::filesystem::is_directory(input, ec)) return false; // the scene reader says so
   std::ifstream f(input, std::ios::binary);
   if (!f) return false;
   std::string head(4096, '\0');

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -76,6 +77,9 @@ std::string read_input_bytes(const std::string& spec, const std::string& what) {
     ::pclose(p);
     return data;
   }
+  std::error_code ec;
+  if (std::filesystem::is_directory(spec, ec)) // opens, then fails on the first read
+    throw FatalError("cannot open " + what + " \"" + spec + "\": a directory");
   std::ifstream f(spec, std::ios::binary);
   if (!f) throw FatalError("cannot open " + what + " \"" + spec + "\"");
   std::ostringstream ss;

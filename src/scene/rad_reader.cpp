@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sys/wait.h>
 
@@ -56,6 +57,9 @@ void Reader::read_path(const std::string& path) {
   if (path.empty() || path[0] != '!') {
     if (!policy_.open_files)
       throw FatalError("cannot open scene file \"" + path + "\": reading files is disabled");
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) // it would open, then fail to read
+      throw FatalError("cannot open scene file \"" + path + "\": " + std::strerror(EISDIR));
     std::filebuf fb;
     if (!fb.open(path, std::ios::in | std::ios::binary))
       throw FatalError("cannot open scene file \"" + path + "\": " + std::strerror(errno));
