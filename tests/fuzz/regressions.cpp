@@ -69,8 +69,8 @@ INSTANTIATE_TEST_SUITE_P(Targets, FuzzRegression, ::testing::ValuesIn(target_nam
                          [](const auto& info) { return info.param; });
 
 TEST(FuzzRegression, EveryTargetIsRegistered) {
-  for (const char* name :
-       {"rad_reader", "octree_reader", "mesh_reader", "amb_reader", "picture_reader", "options"})
+  for (const char* name : {"rad_reader", "octree_reader", "mesh_reader", "amb_reader",
+                           "picture_reader", "options", "ray_input", "command_line"})
     EXPECT_EQ(registry().count(name), 1u) << name;
 }
 

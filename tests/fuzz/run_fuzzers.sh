@@ -94,6 +94,19 @@ extra_seeds() {
     printf -- '-vf - -x 64 -y 32 -pa 0 -ps 2 -pt .1 -av .1 .1 .1 -S 3 -o f%%03d.hdr s.oct\0#?RADIANCE\nVIEW= -vtv -vp 1 2 3 -vd 0 1 0\n\n' >"$dir/x-rpict"
     printf -- '-vth -vh 180 -vv 180 -vo 1 -va 10 -vs .2 -vl -.1 -dj .7 -ds .1 -defaults' >"$dir/x-view"
     ;;
+  command_line) # words, option files a and b, variables A and B, view file v (NUL-separated)
+    printf -- '-ab 2 @a -vf v\0-aa .1 @b\0-ad 9 $A\0-as 3 $B\0-ar 5\0rview -vtv -vp 1 2 3\n' >"$dir/x-nested"
+    printf -- '@a\0@a\0\0\0\0' >"$dir/x-self"
+    printf -- '-x 64 -y 32 -vf - -S 2 @b\0\0-ps 2 -pt .1 $A\0-dj .5\0\0#?RADIANCE\nVIEW= -vth -vh 180\n\n' >"$dir/x-rpict"
+    ;;
+  ray_input) # a format byte, then rays: ascii from the data's ray and sensor files, and binary
+    local f
+    for f in "$D"/scenes/*_rays.txt "$D"/scenes/*.pts; do
+      { printf a; head -c 4096 "$f"; } >"$dir/x-${f##*/}"
+    done
+    printf 'f\000\000\200\077\000\000\200\077\000\000\200\077\000\000\000\000\000\000\000\000\000\000\200\077' >"$dir/x-float"
+    printf 'd\000\000\000\000\000\000\360\077\000\000\000\000\000\000\370\177' >"$dir/x-double-nan"
+    ;;
   picture_reader)
     printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\nEXPOSURE=2\n\n-Y 2 +X 2\n\200\200\200\201\001\001\001\001\100\100\100\202\001\001\001\001' >"$dir/x-flat"
     printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n\002\002\000\010\210\200\210\100\004\001\002\003\004\204\004\210\201' >"$dir/x-rle"
