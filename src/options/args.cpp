@@ -137,6 +137,11 @@ void ArgList::expand(std::size_t i) {
     if (depth == kMaxNesting)
       throw FatalError("cannot expand '" + arg + "': more than " + std::to_string(kMaxNesting) +
                        " nested expansions (an option file that names itself?)");
+    // Files that name each other after other words grow the line without end (Radiance hangs).
+    constexpr int kMaxExpansions = 10000;
+    if (++expansions_ > kMaxExpansions)
+      throw FatalError("cannot expand '" + arg + "': more than " + std::to_string(kMaxExpansions) +
+                       " expansions in one command line (option files that name each other?)");
     std::vector<std::string> words;
     if (arg[0] == '@') {
       // As Radiance's wordfile(): words split at white space, quotes kept as they are.

@@ -63,6 +63,7 @@ const Case kCases[] = {
     {"@B@/rtrace -h @@T@ office_clear.oct", "", 2, "Is a directory"},
     {"@B@/rtrace -h @@T@/self.opt office_clear.oct", "", 1, "nested expansions"},
     {"@B@/rpict @@T@/self.opt office_clear.oct", "", 1, "nested expansions"},
+    {"@B@/rtrace -h @@T@/ping.opt office_clear.oct", "", 1, "expansions in one command line"},
     {"@B@/rtrace -h '$RADCL_NO_SUCH_VARIABLE' office_clear.oct", "", 2, "cannot expand"},
     // name and ambient files
     {"@B@/rtrace -h -aI /nonexistent office_clear.oct", "", 1,
@@ -108,6 +109,9 @@ protected:
            ("radcl-bad-" + std::to_string(::getpid()) + "-" + std::to_string(GetParam()));
     fs::create_directories(tmp_);
     std::ofstream(tmp_ / "self.opt") << "@" << (tmp_ / "self.opt").string() << "\n";
+    // Two files that name each other after other words: the line grows without end.
+    std::ofstream(tmp_ / "ping.opt") << "-aa .1 @" << (tmp_ / "pong.opt").string() << "\n";
+    std::ofstream(tmp_ / "pong.opt") << "@" << (tmp_ / "ping.opt").string() << "\n";
   }
   void TearDown() override { fs::remove_all(tmp_); }
   fs::path tmp_;

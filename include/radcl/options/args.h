@@ -42,7 +42,8 @@ public:
 
   // Expands position i until it is a plain word. Throws SystemError("cannot expand '<arg>'",
   // with the system's reason for a file) for an unreadable file or an unset variable, as
-  // Radiance does, and FatalError for expansions nested past a limit (a file naming itself).
+  // Radiance does, and FatalError for expansions nested past a limit (a file naming itself) or
+  // more of them than any real command line has (files that name each other further along).
   void expand(std::size_t i);
 
   // Radiance's badarg(): the words after position i match `types` ('i' integer, 'f' real,
@@ -51,6 +52,7 @@ public:
 
 private:
   std::vector<std::string> args_;
+  int expansions_ = 0; // so far, over the whole command line
 };
 
 // Radiance's boolean suffix: '\0' toggles, "+yYtT1" sets, "-nNfF0" clears. Returns false for
