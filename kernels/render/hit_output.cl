@@ -101,13 +101,15 @@ static inline float4 rc_leave_org(const rc_out* o, float3 org, float3 dir, float
   return (float4)(rc_leave(org, o->ng, dir, tmin), RC_TMIN_OFF);
 }
 
-static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
-                                  float3 contrib, const rc_ray* r, uint source) {
+/* A shadow request from `org` (as rc_leave_org gives it) along dir up to tmax, having travelled
+ * dist0 from its eye ray's origin, in the medium o holds. */
+static inline void rc_emit_shadow_from(rc_out* o, float4 org, float3 dir, float tmax,
+                                       float3 contrib, const rc_ray* r, uint source, float dist0) {
   if (o->super) return;
   rc_out_reserve(o, 1u, 0u);
   if (o->write) {
     rc_shadow s;
-    s.org = rc_leave_org(o, org, dir, tmin);
+    s.org = org;
     s.dir = (float4)(dir, tmax);
     s.contrib = (float4)(contrib, 0.0f);
     /* The medium the shadow ray starts in (rc_shadow_ext: what it loses). */
@@ -119,7 +121,7 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
     s.pad0 = 0;
 #endif
     s.crtype = rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR);
-    s.dist0 = o->dist;
+    s.dist0 = dist0;
     s.sdist0 = 0.0f;
     s.clip = r->clip;
     s.inside = r->inside;
@@ -128,6 +130,13 @@ static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin,
     o->shadows[o->nshadow] = s;
   }
   o->nshadow++;
+}
+
+/* A shadow request leaving the surface point o is shading. */
+static inline void rc_emit_shadow(rc_out* o, float3 org, float3 dir, float tmin, float tmax,
+                                  float3 contrib, const rc_ray* r, uint source) {
+  if (o->super) return;
+  rc_emit_shadow_from(o, rc_leave_org(o, org, dir, tmin), dir, tmax, contrib, r, source, o->dist);
 }
 
 /* A child's random-number stream: mixes the parent's sample index with the child's number. */

@@ -70,29 +70,6 @@ static inline float rc_mist_tr(float e) {
   return e > 92.0f ? 0.0f : exp(-e);
 }
 
-/* A scattering sample's shadow request: from point q of ray r (tt along it), in r's medium. */
-static inline void rc_mist_emit(rc_out* o, const rc_ray* r, float3 q, float3 l, float dist,
-                                float3 c, uint source, float tt) {
-  rc_out_reserve(o, 1u, 0u);
-  if (o->write) {
-    rc_shadow s;
-    s.org = (float4)(q, 0.0f); /* in mid-air: nothing to step off */
-    s.dir = (float4)(l, dist);
-    s.contrib = (float4)(c, 0.0f);
-    s.cext = (float4)(o->cext, as_float(o->medium));
-    s.pad0 = o->slights;
-    s.crtype = rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR);
-    s.dist0 = r->dist0 + tt;
-    s.sdist0 = 0.0f;
-    s.clip = r->clip;
-    s.inside = r->inside;
-    s.primary = r->primary;
-    s.source = source;
-    o->shadows[o->nshadow] = s;
-  }
-  o->nshadow++;
-}
-
 /* The listed sources' light scattered into ray r over its segment of length t in extinction
  * cext (o holds the rest of that medium): per source and sample point, one sample of the whole
  * source (no partition, -dj jitter), weighted by the Henyey-Greenstein phase of the angle
@@ -145,7 +122,8 @@ static void rc_mist_scatter(const rc_scene_args* S, rc_out* o, const rc_ray* r, 
         ph = (1.0f - g * g) / (x * sqrt(x));
       }
       float3 c = k * ls * ve * (ph * omega);
-      if (rc_max3(c) > 0.0f) rc_mist_emit(o, r, q, l, dist, c, sn, tt);
+      if (rc_max3(c) > 0.0f) /* in mid-air: nothing to step off */
+        rc_emit_shadow_from(o, (float4)(q, 0.0f), l, dist, c, r, sn, r->dist0 + tt);
     }
   }
 }

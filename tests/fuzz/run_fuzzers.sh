@@ -99,13 +99,16 @@ extra_seeds() {
     printf -- '@a\0@a\0\0\0\0' >"$dir/x-self"
     printf -- '-x 64 -y 32 -vf - -S 2 @b\0\0-ps 2 -pt .1 $A\0-dj .5\0\0#?RADIANCE\nVIEW= -vth -vh 180\n\n' >"$dir/x-rpict"
     ;;
-  ray_input) # a format byte, then rays: ascii from the data's ray and sensor files, and binary
+  ray_input) # a format byte, -x and -y bytes, then rays: ascii from the data's ray and sensor
+    # files (no count, a 4x3 count, -x 1 flushes), and binary records
     local f
     for f in "$D"/scenes/*_rays.txt "$D"/scenes/*.pts; do
-      { printf a; head -c 4096 "$f"; } >"$dir/x-${f##*/}"
+      { printf 'a\000\000'; head -c 4096 "$f"; } >"$dir/x-${f##*/}"
     done
-    printf 'f\000\000\200\077\000\000\200\077\000\000\200\077\000\000\000\000\000\000\000\000\000\000\200\077' >"$dir/x-float"
-    printf 'd\000\000\000\000\000\000\360\077\000\000\000\000\000\000\370\177' >"$dir/x-double-nan"
+    { printf 'a\004\003'; head -c 4096 "$D"/scenes/office_grid.pts; } >"$dir/x-count"
+    printf 'a\001\000 0 0 0 0 0 1\n0 0 0 0 0 0\n0 0 0 1 0 0\n' >"$dir/x-flush"
+    printf 'f\002\001\000\000\200\077\000\000\200\077\000\000\200\077\000\000\000\000\000\000\000\000\000\000\200\077' >"$dir/x-float"
+    printf 'd\000\000\000\000\000\000\000\000\360\077\000\000\000\000\000\000\370\177' >"$dir/x-double-nan"
     ;;
   picture_reader)
     printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\nEXPOSURE=2\n\n-Y 2 +X 2\n\200\200\200\201\001\001\001\001\100\100\100\202\001\001\001\001' >"$dir/x-flat"
