@@ -1,13 +1,16 @@
 // Bad invocations of rtrace and rpict, as users make them (issue 34): missing, unreadable and
 // directory files for the file options, non-numeric and out-of-range values, broken views,
-// option files that cannot be expanded, odd ray input. Each gives its Radiance-style message
-// and exit status (1 for a fatal error, 2 for a system error, 0 where Radiance carries on),
-// never an internal error, a crash or a hang, and leaves no half-written output behind.
+// option files that cannot be expanded (binary or huge ones too), odd ray input. Each gives its
+// Radiance-style message and exit status (1 for a fatal error, 2 for a system error, 0 where
+// Radiance carries on), never an internal error, a crash or a hang, and leaves no half-written
+// output behind.
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
 #include <unistd.h>
+
+#include <cstdint>
 
 #include "test_env.h"
 
@@ -65,6 +68,9 @@ const Case kCases[] = {
     {"@B@/rpict @@T@/self.opt office_clear.oct", "", 1, "nested expansions"},
     {"@B@/rtrace -h @@T@/ping.opt office_clear.oct", "", 1, "expansions in one command line"},
     {"@B@/rtrace -h '$RADCL_NO_SUCH_VARIABLE' office_clear.oct", "", 2, "cannot expand"},
+    {"@B@/rtrace -h @@T@/binary.opt office_clear.oct", "", 1, "must be the only scene input"},
+    {"@B@/rtrace -h @@T@/huge.opt -ov office_clear.oct", "1 1 1 0 0 1\n", 0,
+     "\t"}, // 4 M words: a value
     // name and ambient files
     {"@B@/rtrace -h -aI /nonexistent office_clear.oct", "", 1,
      "cannot open ambient include file \"/nonexistent\""},
@@ -112,6 +118,20 @@ protected:
     // Two files that name each other after other words: the line grows without end.
     std::ofstream(tmp_ / "ping.opt") << "-aa .1 @" << (tmp_ / "pong.opt").string() << "\n";
     std::ofstream(tmp_ / "pong.opt") << "@" << (tmp_ / "ping.opt").string() << "\n";
+    const std::string cmd = kCases[GetParam()].cmd;
+    if (cmd.find("binary.opt") != std::string::npos) { // 64 KB of fixed pseudo-random bytes
+      std::ofstream f(tmp_ / "binary.opt", std::ios::binary);
+      std::uint32_t x = 12345;
+      for (int i = 0; i < 65536; ++i) {
+        x = x * 1664525u + 1013904223u;
+        f.put(static_cast<char>(x >> 24));
+      }
+    }
+    if (cmd.find("huge.opt") != std::string::npos) { // 12 MB: the command line it makes works
+      std::ofstream f(tmp_ / "huge.opt");
+      for (int i = 0; i < 2000000; ++i)
+        f << "-ab 0 ";
+    }
   }
   void TearDown() override { fs::remove_all(tmp_); }
   fs::path tmp_;
