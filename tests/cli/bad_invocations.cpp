@@ -150,7 +150,9 @@ TEST_P(BadInvocations, ClearMessageAndStatus) {
   EXPECT_EQ(rc, c.rc) << out.substr(0, 2000);
   EXPECT_NE(out.find(c.says), std::string::npos) << out.substr(0, 2000);
   EXPECT_EQ(out.find("internal error"), std::string::npos) << out.substr(0, 2000);
-  if (*c.absent) EXPECT_FALSE(fs::exists(tmp_ / c.absent)) << c.absent;
+  if (*c.absent) {
+    EXPECT_FALSE(fs::exists(tmp_ / c.absent)) << c.absent;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, BadInvocations,
