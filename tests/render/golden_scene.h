@@ -1,15 +1,20 @@
-// Helpers of the golden tests on the second-wave reference scenes (golden_aniso, golden_prism,
-// golden_medium): mean luminances of repeated renders through the library and through rpict.
+// Helpers of the golden tests on the second-wave reference scenes (golden_aniso, golden_bsdf,
+// golden_prism, golden_medium, golden_mist): mean luminances of repeated renders through the
+// library and through rpict, and the checks of a default-settings grid and of a view against
+// Radiance's runs.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
+#include "golden_draws.h"
 #include "radcl/device/context.h"
 #include "radcl/image/picture.h"
 #include "radcl/render/renderer.h"
@@ -162,6 +167,47 @@ inline double median_error(const std::vector<double>& ours, const std::vector<do
   if (err.empty()) return 0;
   std::nth_element(err.begin(), err.begin() + err.size() / 2, err.end());
   return err[err.size() / 2];
+}
+
+// The default-settings grid's check: radcl's mean error from the converged answer over its seeds
+// no farther than that of Radiance's runs, three standard errors of the difference allowed.
+inline ::testing::AssertionResult no_farther_than_radiance(const DrawComparison& c) {
+  if (!c.ok) return ::testing::AssertionFailure() << c.log;
+  std::printf("default grid: mean relative error radcl %.4f, Radiance %.4f (se %.4f)\n", c.ours,
+              c.theirs, c.se);
+  ::testing::Test::RecordProperty("radcl", std::to_string(c.ours));
+  ::testing::Test::RecordProperty("radiance", std::to_string(c.theirs));
+  if (c.ours <= c.theirs + 3 * c.se) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << "mean relative error radcl " << c.ours << ", Radiance " << c.theirs
+         << " (standard error of the difference " << c.se << ")";
+}
+
+// rpict's 256 x 192 view (`renders` renders of `rpict <options> <octree>` averaged; the options
+// set that size) against the mean of Radiance's renders results/<ref>.hdr, on the 8x8 blocks
+// that mean knows to 2% (results/<ref>_se.txt). ok is false, with the reason in log, where a
+// render or the reference could not be read.
+struct ViewComparison : BlockStats {
+  bool ok = false;
+  std::string log;
+};
+inline ViewComparison view_against_radiance(const std::string& options, const std::string& octree,
+                                            int renders, const std::string& ref) {
+  const int w = 256, h = 192;
+  ViewComparison v;
+  const std::vector<double> ours = mean_view(options, octree, renders, w, h, &v.log);
+  if (ours.empty()) return v;
+  const std::vector<double> theirs = picture_luminance(data("results/" + ref + ".hdr"), w, h);
+  if (theirs.empty()) {
+    v.log = "results/" + ref + ".hdr is not a 256 x 192 picture";
+    return v;
+  }
+  static_cast<BlockStats&>(v) =
+      block_stats(ours, theirs, w, h, data("results/" + ref + "_se.txt"), 0.02);
+  v.ok = true;
+  std::printf("view: mean ratio %.4f, RMS %.4f over %d of %d lit blocks\n", v.mean_ratio, v.rms,
+              v.blocks, v.lit);
+  return v;
 }
 
 } // namespace radcl::test::golden
