@@ -74,8 +74,8 @@ struct Renderer::Impl {
   // ---- The driver (wave_loop.cpp) ----
   // Per-wave device buffers and host queues, kept between waves and batches.
   ScratchPool scratch{ctx};
-  std::vector<std::vector<rc_ray>> spare_rays;
-  std::vector<std::vector<rc_hit>> spare_hits;
+  std::vector<HostQueue<rc_ray>> spare_rays;
+  std::vector<HostQueue<rc_hit>> spare_hits;
   // Rays of a generation traced and shaded together (RADCL_CHUNK_RAYS sets it, for tests and
   // tuning): large enough that launches and transfers are a small part of a chunk's time,
   // small enough that its scratch stays in the caches and in reused pages. On a device that
@@ -99,13 +99,13 @@ struct Renderer::Impl {
                     std::size_t first_index);
   // A wave's children join the next wave; while the cache is built, its record requests (they
   // are not rays) go to `misses` instead, in the same order.
-  void append_children(const std::vector<rc_ray>& children, std::vector<rc_ray>& next);
+  void append_children(const std::vector<rc_ray>& children, HostQueue<rc_ray>& next);
   // The same for children already written to next[first...]: the record requests among them
   // move to `misses`, the rest close up in order.
-  void set_misses_aside(std::vector<rc_ray>& next, std::size_t first);
+  void set_misses_aside(HostQueue<rc_ray>& next, std::size_t first);
   // The second pass of -as: the hemispheres' rays are shaded again and write only the
   // super-samples the tally tree asked for.
-  void supersample(const std::vector<TallyTree::SuperRequest>& req, std::vector<rc_ray>& next);
+  void supersample(const std::vector<TallyTree::SuperRequest>& req, HostQueue<rc_ray>& next);
 
   // The current batch. A primary's result slot: ids are input indices unless the caller gave
   // its own (then they are looked up).
@@ -124,7 +124,7 @@ struct Renderer::Impl {
 
   // ---- Nearest hits (intersect_closest.cpp) ----
   // Embree over a chunk; depth-0 hits also fill the primaries' geometric results.
-  void trace(std::span<const rc_ray> queue, std::vector<rc_hit>& hits, std::span<PrimaryResult> res,
+  void trace(std::span<const rc_ray> queue, HostQueue<rc_hit>& hits, std::span<PrimaryResult> res,
              bool primaries);
   // The device record of a geometry answer; a miss may still hit a distant source.
   rc_hit to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h) const;
@@ -135,7 +135,7 @@ struct Renderer::Impl {
   // Radiance's leak test for the cache records a chunk's lookups may use (ambient/leaks.h):
   // per hit on a surface that may look the cache up, the corral-marked records the kernel could
   // accept there are tested by a short ray; the blocked ones are listed for the kernel.
-  void test_leaks(std::span<const rc_ray> queue, std::vector<rc_hit>& hits);
+  void test_leaks(std::span<const rc_ray> queue, HostQueue<rc_hit>& hits);
   // The current render_batch's lists of records whose leak test failed, per hit: [count,
   // index...]; a hit names its list in nrm.w (docs/cache-internals.md).
   std::vector<std::uint32_t> leak_lists{0};
@@ -186,13 +186,13 @@ struct Renderer::Impl {
   // counted by rc_shade's count mode), enough room for about 98% of them.
   // A small chunk keeps the last sizes: counting would cost it a launch and a second shading of
   // each ray, more than re-shading its few rays that do not fit.
-  void size_slots(std::span<const rc_ray> queue, const std::vector<rc_hit>& hits);
+  void size_slots(std::span<const rc_ray> queue, const HostQueue<rc_hit>& hits);
   // Shades rays [rays, rays + n): writes their shadow requests and children, tests the
   // shadows, adds each ray's total into its primary's sum, appends the children to `next`.
   // One pass writes every ray's records into fixed slots; rays that did not fit are shaded
   // again into exactly sized room. The records are packed in ray order either way.
   void shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n, std::vector<Vec3d>& sums,
-                   std::vector<rc_ray>& next);
+                   HostQueue<rc_ray>& next);
   // Shades the rays `over` (slice indices) again, their records written into exact room, and
   // puts them in their places in the slice's packed records.
   void reshade(const rc_ray* rays, const rc_hit* hit, const std::vector<std::uint32_t>& over,
@@ -207,7 +207,7 @@ struct Renderer::Impl {
     std::vector<rc_shadow> shadows, requested;
     std::vector<std::uint8_t> blocked;
     std::vector<rc_float4> total;
-    std::vector<rc_ray> fused_children; // a fused slice's packed children, read whole
+    HostQueue<rc_ray> fused_children; // a fused slice's packed children, read whole
   } shade_scratch;
 
   // ---- Shadow rays (intersect_shadow.cpp) ----

@@ -58,7 +58,7 @@ void Renderer::Impl::run_count(device::Buffer& rays, device::Buffer& hits, devic
   run_shade(l, n);
 }
 
-void Renderer::Impl::size_slots(std::span<const rc_ray> queue, const std::vector<rc_hit>& hits) {
+void Renderer::Impl::size_slots(std::span<const rc_ray> queue, const HostQueue<rc_hit>& hits) {
   if (queue.size() <= kUncountedWave) return;
   Timed timed(prof, Phase::Slots);
   std::size_t n = queue.size(), stride = std::max<std::size_t>(1, n / 512);
@@ -139,13 +139,23 @@ void Renderer::Impl::run_pack(device::Buffer& slot_sh, device::Buffer& slot_sp,
 }
 
 void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n,
-                                 std::vector<Vec3d>& sums, std::vector<rc_ray>& next) {
+                                 std::vector<Vec3d>& sums, HostQueue<rc_ray>& next) {
   Timed timed(prof, Phase::Shade);
   std::uint32_t un = static_cast<std::uint32_t>(n);
+  // RADCL_PROFILE=waves: each step waited for and timed on its own.
+  auto step_at = std::chrono::steady_clock::now();
+  const auto step = [&](PhaseProfile::Step s) {
+    if (!prof.waves()) return;
+    ctx.finish();
+    const auto now = std::chrono::steady_clock::now();
+    prof.add_step(s, std::chrono::duration<double>(now - step_at).count());
+    step_at = now;
+  };
   device::Buffer& brays = scratch(kRays, n * sizeof(rc_ray));
   write_rows(brays, rays, n * sizeof(rc_ray));
   device::Buffer& bhits = scratch(kHits, n * sizeof(rc_hit));
   write_rows(bhits, hit, n * sizeof(rc_hit));
+  step(PhaseProfile::StepUpload);
   const std::uint32_t csh = cap_shadow, csp = cap_spawn;
   device::Buffer& bslot_sh = scratch(kShadowSlots, n * csh * sizeof(rc_shadow));
   device::Buffer& bslot_sp = scratch(kSpawnSlots, n * csp * sizeof(rc_ray));
@@ -159,7 +169,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   run_shade(l, n);
   std::chrono::steady_clock::time_point w1;
   if (prof.waves()) {
-    ctx.finish();
+    step(PhaseProfile::StepKernel);
     w1 = std::chrono::steady_clock::now();
   }
   // A small slice on a GPU has its records packed before the host sees the counts (rc_offsets
@@ -204,6 +214,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
           : static_cast<const rc_ray*>(bslot_sp.peek_later(n * csp * sizeof(rc_ray), peek_sp));
   ctx.finish();
   if (prof.waves()) {
+    step(PhaseProfile::StepCounts);
     const auto w2 = std::chrono::steady_clock::now();
     prof.add_wave(n, std::chrono::duration<double>(w1 - w0).count(),
                   std::chrono::duration<double>(w2 - w1).count());
@@ -225,6 +236,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   rc_ray* children = next.data() + first_child;
   // Packed already (then the device's offsets are the host's: no ray was over its room)?
   const bool packed = fused && over.empty();
+  step(PhaseProfile::StepOffsets);
   device::Buffer& bsoff =
       packed ? scratch(kShadowOff, n * 4) : scratch(kShadowOff, shadow_off); // sums read it
   device::Buffer& bsh = scratch(kShadows, std::size_t{nshadow} * sizeof(rc_shadow));
@@ -237,6 +249,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     if (on_device) bpoff.write(spawn_off.data(), spawn_off.size() * 4);
     device::Buffer& bsp = scratch(kSpawned, std::size_t{on_device ? nspawn : 1} * sizeof(rc_ray));
     run_pack(bslot_sh, bslot_sp, bnshadow, bnspawn, bsoff, bpoff, n, on_device, bsh, bsp);
+    step(PhaseProfile::StepPack);
     // The shadow rays' views come back in the same wait as the children, unless requests
     // shaded again below still have to be written into their places.
     if (fewer_waits && over.empty() && !throwaway && nshadow)
@@ -255,6 +268,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
       });
     }
   }
+  step(PhaseProfile::StepChildren);
   if (!over.empty()) reshade(rays, hit, over, nsp, shadow_off, spawn_off, bsh, children);
   if (throwaway) {
     set_misses_aside(next, first_child);

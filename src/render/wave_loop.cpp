@@ -67,13 +67,13 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   // millions of rays in every batch paged in (and cleared) new memory each time.
   Spare<rc_ray> queue_hold(spare_rays), next_hold(spare_rays);
   Spare<rc_hit> hits_hold(spare_hits);
-  std::vector<rc_ray>& queue = queue_hold.v;
-  std::vector<rc_hit>& hits = hits_hold.v;
+  HostQueue<rc_ray>& queue = queue_hold.v;
+  HostQueue<rc_hit>& hits = hits_hold.v;
   // Room for a whole generation up front (address space only until used): growing by doubling
   // paged in and copied 390 MB in 2,000 sensors' run on 2 cores, a tenth of its CPU time.
-  for (std::vector<rc_ray>* v : {&queue, &next_hold.v})
+  for (HostQueue<rc_ray>* v : {&queue, &next_hold.v})
     if (v->capacity() < 2 * generation_rays()) v->reserve(2 * generation_rays());
-  queue.resize(prim.size());
+  queue.assign(prim.size(), rc_ray{}); // fields a primary does not set stay 0
   leak_lists.assign(1, 0u);
   leak_uploaded = 0;
   std::vector<Vec3d> sums(prim.size(), Vec3d{0, 0, 0});
@@ -150,9 +150,9 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   // chunk's hits and its primaries' geometric results, which shading never reads, and every
   // device command stays on this thread.
   bool first_wave = true;
-  std::vector<rc_ray>& next = next_hold.v;
+  HostQueue<rc_ray>& next = next_hold.v;
   Spare<rc_hit> ahead_hold(spare_hits);
-  std::vector<rc_hit>& ahead = ahead_hold.v;
+  HostQueue<rc_hit>& ahead = ahead_hold.v;
   const std::size_t chunk = chunk_rays();
   const bool overlap = !std::getenv("RADCL_NO_OVERLAP");
   while (!queue.empty()) {
@@ -161,7 +161,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     const auto part_at = [&](std::size_t a) {
       return std::span<const rc_ray>(queue.data() + a, std::min(n, a + chunk) - a);
     };
-    const auto hits_at = [&](std::size_t a, std::vector<rc_hit>& h) {
+    const auto hits_at = [&](std::size_t a, HostQueue<rc_hit>& h) {
       if (first_wave && !meters.empty())
         h.assign(meters.begin() + static_cast<std::ptrdiff_t>(a),
                  meters.begin() + static_cast<std::ptrdiff_t>(std::min(n, a + chunk)));
@@ -213,7 +213,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
 }
 
 void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req,
-                                 std::vector<rc_ray>& next) {
+                                 HostQueue<rc_ray>& next) {
   Timed timed(prof, Phase::Super);
   std::size_t n = req.size();
   std::vector<rc_ray> rays(n);
@@ -253,17 +253,19 @@ void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req
   append_children(children, next);
 }
 
-void Renderer::Impl::append_children(const std::vector<rc_ray>& children,
-                                     std::vector<rc_ray>& next) {
+void Renderer::Impl::append_children(const std::vector<rc_ray>& children, HostQueue<rc_ray>& next) {
   if (!collecting) {
     next.insert(next.end(), children.begin(), children.end());
     return;
   }
   for (const rc_ray& r : children)
-    ((r.flags & RC_RAY_KIND_MASK) == RC_RAY_AMBMISS ? misses : next).push_back(r);
+    if ((r.flags & RC_RAY_KIND_MASK) == RC_RAY_AMBMISS)
+      misses.push_back(r);
+    else
+      next.push_back(r);
 }
 
-void Renderer::Impl::set_misses_aside(std::vector<rc_ray>& next, std::size_t first) {
+void Renderer::Impl::set_misses_aside(HostQueue<rc_ray>& next, std::size_t first) {
   if (!collecting) return;
   std::size_t k = first;
   for (std::size_t i = first; i < next.size(); ++i) {

@@ -59,6 +59,9 @@ public:
     wave_kernel_[b] += kernel;
     wave_reads_[b] += reads;
   }
+  // RADCL_PROFILE=waves: the host's steps of shading a slice (kStep names), summed.
+  enum Step { StepUpload, StepKernel, StepCounts, StepOffsets, StepPack, StepChildren, kSteps };
+  void add_step(Step s, double seconds) { step_[s] += seconds; }
   // The process's CPU time so far, every thread's.
   static double cpu_now() {
     timespec ts{};
@@ -93,6 +96,11 @@ public:
     std::fprintf(f, "profile: %-12s %9.3f s %14s cpu %8.3f s (%.2f cores)\n", "lifetime", life, "",
                  cpu, life > 0 ? cpu / life : 0.0);
     std::fprintf(f, "profile: %-12s %9.3f s\n", "untimed", life - timed);
+    static const char* steps[] = {"upload", "kernel", "counts", "offsets", "pack", "children"};
+    static_assert(std::size(steps) == kSteps);
+    if (waves_)
+      for (int i = 0; i < kSteps; ++i)
+        std::fprintf(f, "profile: shade step %-10s %9.3f s\n", steps[i], step_[i]);
     for (std::size_t b = 0; b < wave_n_.size(); ++b)
       if (wave_n_[b])
         std::fprintf(
@@ -142,6 +150,7 @@ private:
   bool on_, waves_ = false;
   std::array<std::uint64_t, 6> wave_n_{}, wave_rays_{};
   std::array<double, 6> wave_kernel_{}, wave_reads_{};
+  std::array<double, kSteps> step_{};
   std::chrono::steady_clock::time_point t0_;
   double cpu0_ = cpu_now();
   std::array<double, static_cast<int>(Phase::kCount)> sec_{}, cpu_{};
