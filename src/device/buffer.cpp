@@ -100,6 +100,21 @@ void Buffer::write(const void* src, std::size_t bytes, std::size_t offset) {
   }
 }
 
+void Buffer::copy_from(const Buffer& src, std::size_t bytes, std::size_t src_offset,
+                       std::size_t offset) {
+  if (offset + bytes > bytes_ || src_offset + bytes > src.bytes_)
+    throw FatalError("device buffer copy out of range");
+  if (bytes == 0) return;
+  if (host_ && src.host_ && ctx_->direct_host()) {
+    ctx_->sync();
+    std::memcpy(static_cast<char*>(host_) + offset,
+                static_cast<const char*>(src.host_) + src_offset, bytes);
+    return;
+  }
+  RADCL_CL(clEnqueueCopyBuffer(ctx_->queue(), src.mem_, mem_, src_offset, offset, bytes, 0, nullptr,
+                               nullptr));
+}
+
 const void* Buffer::peek(std::size_t bytes, std::vector<char>& staging) const {
   return peek_into(bytes, staging, false);
 }

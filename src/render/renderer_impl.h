@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "generation_mirror.h"
 #include "radcl/ambient/cache.h"
 #include "radcl/ambient/leaks.h"
 #include "radcl/ambient/record_maker.h"
@@ -76,6 +77,10 @@ struct Renderer::Impl {
   ScratchPool scratch{ctx};
   std::vector<HostQueue<rc_ray>> spare_rays;
   std::vector<HostQueue<rc_hit>> spare_hits;
+  // The current generation's rays on the device (GPU); gen_queue is its host copy, whose rows
+  // shade_slice names by address.
+  GenerationMirror mirror{ctx};
+  std::span<const rc_ray> gen_queue;
   // Rays of a generation traced and shaded together (RADCL_CHUNK_RAYS sets it, for tests and
   // tuning): large enough that launches and transfers are a small part of a chunk's time,
   // small enough that its scratch stays in the caches and in reused pages. On a device that
@@ -198,7 +203,7 @@ struct Renderer::Impl {
   void reshade(const rc_ray* rays, const rc_hit* hit, const std::vector<std::uint32_t>& over,
                const std::vector<std::uint32_t>& nsp, const std::vector<std::uint32_t>& shadow_off,
                const std::vector<std::uint32_t>& spawn_off, device::Buffer& shadows,
-               rc_ray* children);
+               rc_ray* children, device::Buffer* into = nullptr, std::size_t base = 0);
   // shade_slice's host-side vectors, kept from slice to slice: fresh ones of this size were
   // paged in and cleared by the kernel every time (8% of a run's CPU time on 2 cores).
   struct ShadeScratch {

@@ -92,7 +92,7 @@ void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
                              const std::vector<std::uint32_t>& nsp,
                              const std::vector<std::uint32_t>& shadow_off,
                              const std::vector<std::uint32_t>& spawn_off, device::Buffer& shadows,
-                             rc_ray* children) {
+                             rc_ray* children, device::Buffer* into, std::size_t base) {
   std::size_t m = over.size();
   std::vector<rc_ray> r(m);
   std::vector<rc_hit> h(m);
@@ -102,6 +102,22 @@ void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
     h[k] = hit[over[k]];
     soff[k] = shadow_off[over[k]]; // straight into their packed places
     poff[k] = nsp[over[k]];
+  }
+  if (into) {
+    // Straight into their places in the device's copy of the next generation (the others are
+    // there already), which is then read whole.
+    for (std::size_t k = 0; k < m; ++k)
+      poff[k] = static_cast<std::uint32_t>(base + spawn_off[over[k]]);
+    device::Buffer& brays = scratch(kStepRays, r);
+    device::Buffer& bhits = scratch(kStepHits, h);
+    device::Buffer& bsoff = scratch(kSuperOff, soff);
+    device::Buffer& bpoff = scratch(kSuperData, poff);
+    device::Buffer& bimm = scratch(kTotal, m * sizeof(rc_float4));
+    run_shade(ShadeLaunch{&brays, &bhits, &bsoff, &bpoff, &shadows, into, &bimm}, m);
+    const std::size_t total = spawn_off.empty() ? 0 : spawn_off.back() + nsp.back();
+    into->read_later(children, total * sizeof(rc_ray), base * sizeof(rc_ray));
+    ctx.finish();
+    return;
   }
   std::uint32_t tsp = prefix_sum(poff);
   device::Buffer& brays = scratch(kStepRays, r);
@@ -152,7 +168,14 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     step_at = now;
   };
   device::Buffer& brays = scratch(kRays, n * sizeof(rc_ray));
-  write_rows(brays, rays, n * sizeof(rc_ray));
+  // The rays from the device's copy of their generation where it has one (rc_ray.tally there
+  // may be stale: the tally tree changes it on the host, and it only passes to the children,
+  // whose tally is set again below).
+  const bool from_mirror =
+      mirror.current() && rays >= gen_queue.data() &&
+      rays + n <= gen_queue.data() + gen_queue.size() &&
+      mirror.copy_current(brays, static_cast<std::size_t>(rays - gen_queue.data()), n);
+  if (!from_mirror) write_rows(brays, rays, n * sizeof(rc_ray));
   device::Buffer& bhits = scratch(kHits, n * sizeof(rc_hit));
   write_rows(bhits, hit, n * sizeof(rc_hit));
   step(PhaseProfile::StepUpload);
@@ -180,6 +203,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   const bool fused = fewer_waits && on_device &&
                      n * (csp * sizeof(rc_ray) + csh * sizeof(ShadowView)) <= kFusedBytes;
   const ShadowView* fused_view = nullptr;
+  const device::Buffer* fused_spawned = nullptr; // its packed children
   if (fused) {
     device::Buffer& bsoff = scratch(kShadowOff, n * 4);
     device::Buffer& bpoff = scratch(kSpawnOff, n * 4);
@@ -198,6 +222,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     }
     x.fused_children.resize(n * csp);
     bsp.read_later(x.fused_children.data(), n * csp * sizeof(rc_ray));
+    fused_spawned = &bsp;
   }
   // The counts (and on PoCL this slice's slots, not the pool buffers whole) in one wait: a
   // small wave's time is mostly the latency of its transfers.
@@ -236,6 +261,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   rc_ray* children = next.data() + first_child;
   // Packed already (then the device's offsets are the host's: no ray was over its room)?
   const bool packed = fused && over.empty();
+  device::Buffer* into = nullptr; // see below
   step(PhaseProfile::StepOffsets);
   device::Buffer& bsoff =
       packed ? scratch(kShadowOff, n * 4) : scratch(kShadowOff, shadow_off); // sums read it
@@ -243,6 +269,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   const ShadowView* view = nullptr;
   if (packed) {
     std::copy_n(x.fused_children.data(), nspawn, children);
+    mirror.append(*fused_spawned, first_child, nspawn);
     if (nshadow) view = fused_view;
   } else {
     device::Buffer& bpoff = scratch(kSpawnOff, on_device ? spawn_off.size() * 4 : 4);
@@ -255,7 +282,11 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     if (fewer_waits && over.empty() && !throwaway && nshadow)
       view = view_shadows_later(bsh, nshadow);
     if (on_device) {
-      if (nspawn) bsp.read_later(children, std::size_t{nspawn} * sizeof(rc_ray));
+      // Rays shaded again below write their children straight into the device's copy of the
+      // next generation, read from there whole.
+      into = over.empty() ? nullptr : mirror.next_rows(first_child, nspawn);
+      if (nspawn && !into) bsp.read_later(children, std::size_t{nspawn} * sizeof(rc_ray));
+      mirror.append(bsp, first_child, nspawn);
       ctx.finish();
     } else {
       if (view) ctx.finish();
@@ -269,7 +300,15 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     }
   }
   step(PhaseProfile::StepChildren);
-  if (!over.empty()) reshade(rays, hit, over, nsp, shadow_off, spawn_off, bsh, children);
+  if (!over.empty()) {
+    reshade(rays, hit, over, nsp, shadow_off, spawn_off, bsh, children, into, first_child);
+    if (!into) mirror.upload(children, first_child, nspawn);
+  }
+  if (from_mirror && tree)
+    for_rows(n, [&](std::size_t i) {
+      for (std::uint32_t k = 0; k < nsp[i]; ++k)
+        children[spawn_off[i] + k].tally = rays[i].tally;
+    });
   if (throwaway) {
     set_misses_aside(next, first_child);
     return;

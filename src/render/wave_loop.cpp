@@ -155,8 +155,10 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   HostQueue<rc_hit>& ahead = ahead_hold.v;
   const std::size_t chunk = chunk_rays();
   const bool overlap = !std::getenv("RADCL_NO_OVERLAP");
+  mirror.start_batch();
   while (!queue.empty()) {
     const std::size_t n = queue.size();
+    gen_queue = std::span<const rc_ray>(queue.data(), n);
     peak_generation = std::max(peak_generation, n);
     const auto part_at = [&](std::size_t a) {
       return std::span<const rc_ray>(queue.data() + a, std::min(n, a + chunk) - a);
@@ -196,7 +198,9 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
         supersample(req, next);
     std::swap(queue, next);
     next.clear();
+    mirror.advance();
   }
+  gen_queue = {};
   timed.start(Phase::Batch);
   const auto finish = [&](std::size_t i) {
     res[i].value = tree ? tally.sum(i) : sums[i];
@@ -250,7 +254,9 @@ void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req
   std::vector<rc_ray> children = bspawned.to_vector<rc_ray>(nspawn);
   for (std::size_t i = 0; i < n; ++i)
     tally.supersampled(req[i], children.data() + spawn_off[i], counts[i]);
+  const std::size_t at = next.size();
   append_children(children, next);
+  mirror.upload(next.data() + at, at, next.size() - at);
 }
 
 void Renderer::Impl::append_children(const std::vector<rc_ray>& children, HostQueue<rc_ray>& next) {
@@ -274,6 +280,8 @@ void Renderer::Impl::set_misses_aside(HostQueue<rc_ray>& next, std::size_t first
     else
       next[k++] = next[i];
   }
+  // The device's copy of these rows was made before they closed up.
+  if (k != next.size()) mirror.upload(next.data() + first, first, k - first);
   next.resize(k);
 }
 

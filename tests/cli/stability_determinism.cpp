@@ -131,6 +131,27 @@ TEST(StabilityDeterminism, RtraceSeparateDeviceMemory) {
   EXPECT_TRUE(output("RADCL_DEVICE_MEMORY=separate " + cmd) == base);
 }
 
+// With separate device memory (as on a GPU) each generation's rays stay on the device from
+// the shading that made them to the one that shades them (src/render/generation_mirror.h);
+// rays whose children overflow their slots (small slots: tiny chunks) are shaded again straight
+// into that copy. The same bits with the copy, without it (RADCL_MIRROR=0) and in shared memory:
+// without the cache and with -as (the tally tree changes the rays on the host), while the cache
+// is built (record requests taken out of the generations), and in rpict.
+TEST(StabilityDeterminism, SeparateMemoryKeepsGenerationsOnTheDevice) {
+  for (const std::string cmd :
+       {"rtrace -h -I -u- -fad -ab 2 -aa 0 -ad 64 -as 16 -lw 1e-4 -n 2 office_clear.oct "
+        "< office_grid.pts",
+        "rtrace -h -I -u- -fad -ab 3 -aa 0.15 -ad 128 -as 32 -ar 32 -n 2 office_clear.oct "
+        "< office_grid.pts"}) {
+    std::string base = output(cmd);
+    EXPECT_TRUE(output("RADCL_DEVICE_MEMORY=separate " + cmd) == base) << cmd;
+    EXPECT_TRUE(output("RADCL_DEVICE_MEMORY=separate RADCL_MIRROR=0 " + cmd) == base) << cmd;
+    EXPECT_TRUE(output("RADCL_DEVICE_MEMORY=separate RADCL_CHUNK_RAYS=97 " + cmd) == base) << cmd;
+  }
+  std::string pict = "rpict -u- -vf cornell.vf -x 48 -y 48 -ab 2 -aa 0.2 -ad 64 -as 16 cornell.oct";
+  EXPECT_TRUE(pixels("RADCL_DEVICE_MEMORY=separate " + pict) == pixels(pict)) << pict;
+}
+
 // A generation of rays is traced and shaded in chunks (RADCL_CHUNK_RAYS); chunks of 97 rays
 // give the same bits as the default while the cache is built, with -as, and in rpict.
 TEST(StabilityDeterminism, SameWhateverTheChunkSize) {

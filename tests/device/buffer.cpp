@@ -225,3 +225,28 @@ TEST(Buffer, SeparateMemoryPinnedTransfers) {
 TEST(Buffer, SeparateMemoryPageableTransfers) {
   check_pinned_transfers(false);
 }
+
+// Copies between buffers on the device keep queue order with the writes around them, in
+// separate and in shared memory; a copy out of range is an error, not a stray write.
+TEST(Buffer, CopiesOnTheDevice) {
+  for (const bool separate : {true, false}) {
+    if (separate) setenv("RADCL_DEVICE_MEMORY", "separate", 1);
+    Context ctx(select_device());
+    unsetenv("RADCL_DEVICE_MEMORY");
+    EXPECT_EQ(ctx.zero_copy(), !separate);
+    const std::uint32_t n = 1000;
+    std::vector<std::uint32_t> v(n);
+    std::iota(v.begin(), v.end(), 0u);
+    Buffer a(ctx, n * 4), b(ctx, 2 * n * 4);
+    a.write(v.data(), n * 4);
+    b.write(std::vector<std::uint32_t>(2 * n, 9u).data(), 2 * n * 4);
+    b.copy_from(a, 600 * 4, 100 * 4, 1000 * 4); // a[100..700) to b[1000..1600)
+    std::fill(v.begin(), v.end(), 5u);
+    a.write(v.data(), n * 4); // after the copy: must not reach b
+    std::vector<std::uint32_t> got = b.to_vector<std::uint32_t>(2 * n);
+    for (std::uint32_t i = 0; i < 2 * n; ++i)
+      ASSERT_EQ(got[i], i >= 1000 && i < 1600 ? i - 900 : 9u) << i;
+    EXPECT_THROW(b.copy_from(a, 8, n * 4 - 4), radcl::FatalError);
+    EXPECT_THROW(a.copy_from(b, 8, 0, n * 4 - 4), radcl::FatalError);
+  }
+}

@@ -40,6 +40,10 @@ public:
 
   void write(const void* src, std::size_t bytes, std::size_t offset = 0);
   void read(void* dst, std::size_t bytes, std::size_t offset = 0) const;
+  // `bytes` of `src` from src_offset to this buffer at `offset`, on the device, without waiting
+  // (in queue order with the commands around it).
+  void copy_from(const Buffer& src, std::size_t bytes, std::size_t src_offset = 0,
+                 std::size_t offset = 0);
   // A read queued without waiting: `dst` is filled once the context finishes
   // (Context::finish), so several reads cost one wait. Where the host reads the buffer
   // directly it is an ordinary read.

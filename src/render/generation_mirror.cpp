@@ -1,0 +1,82 @@
+#include "generation_mirror.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include "radcl/util/error.h"
+
+namespace radcl::render {
+namespace {
+// A generation past this many bytes stays on the host (a buffer this large may exceed the
+// device's largest allocation; such waves are split by the batch size long before).
+constexpr std::size_t kMaxBytes = std::size_t{3} << 30;
+} // namespace
+
+GenerationMirror::GenerationMirror(device::Context& ctx) : ctx_(ctx) {
+  const char* e = std::getenv("RADCL_MIRROR"); // "0": every generation uploaded from the host
+  on_ = !ctx.zero_copy() && !(e && std::string(e) == "0");
+}
+
+void GenerationMirror::start_batch() {
+  cur_ok_ = false;
+  next_ok_ = on_;
+}
+
+bool GenerationMirror::copy_current(device::Buffer& dst, std::size_t first, std::size_t n) {
+  if (!cur_ok_) return false;
+  dst.copy_from(buf_[cur_], n * sizeof(rc_ray), first * sizeof(rc_ray), 0);
+  return true;
+}
+
+bool GenerationMirror::room(std::size_t rays, std::size_t keep) {
+  device::Buffer& b = buf_[1 - cur_];
+  const std::size_t bytes = rays * sizeof(rc_ray);
+  if (b.size() >= bytes) return true;
+  if (bytes > kMaxBytes) return false;
+  const std::size_t grown =
+      std::min(kMaxBytes, std::max({bytes, 2 * b.size(), std::size_t{1} << 22}));
+  try {
+    device::Buffer more(ctx_, grown);
+    if (keep) more.copy_from(b, keep * sizeof(rc_ray));
+    b = std::move(more);
+  } catch (const FatalError&) { // no room on the device: this generation goes by the host
+    return false;
+  }
+  return true;
+}
+
+void GenerationMirror::append(const device::Buffer& src, std::size_t at, std::size_t n) {
+  if (!next_ok_ || n == 0) return;
+  if (!room(at + n, at)) {
+    next_ok_ = false;
+    return;
+  }
+  buf_[1 - cur_].copy_from(src, n * sizeof(rc_ray), 0, at * sizeof(rc_ray));
+}
+
+void GenerationMirror::upload(const rc_ray* rows, std::size_t at, std::size_t n) {
+  if (!next_ok_ || n == 0) return;
+  if (!room(at + n, at)) {
+    next_ok_ = false;
+    return;
+  }
+  buf_[1 - cur_].write(rows, n * sizeof(rc_ray), at * sizeof(rc_ray));
+}
+
+device::Buffer* GenerationMirror::next_rows(std::size_t at, std::size_t n) {
+  if (!next_ok_) return nullptr;
+  if (!room(at + n, at)) {
+    next_ok_ = false;
+    return nullptr;
+  }
+  return &buf_[1 - cur_];
+}
+
+void GenerationMirror::advance() {
+  cur_ = 1 - cur_;
+  cur_ok_ = next_ok_;
+  next_ok_ = on_;
+}
+
+} // namespace radcl::render
