@@ -115,6 +115,18 @@ void Buffer::copy_from(const Buffer& src, std::size_t bytes, std::size_t src_off
                                nullptr));
 }
 
+void Buffer::write_pinned(const void* src, std::size_t bytes, std::size_t offset) {
+  if (host_ || !ctx_->is_pinned(src, bytes)) {
+    write(src, bytes, offset);
+    return;
+  }
+  if (offset + bytes > bytes_) throw FatalError("device buffer write out of range");
+  if (bytes == 0) return;
+  bytes_up += bytes;
+  RADCL_CL(
+      clEnqueueWriteBuffer(ctx_->queue(), mem_, CL_FALSE, offset, bytes, src, 0, nullptr, nullptr));
+}
+
 const void* Buffer::peek(std::size_t bytes, std::vector<char>& staging) const {
   return peek_into(bytes, staging, false);
 }

@@ -85,11 +85,51 @@ void* Context::pinned(std::size_t bytes) {
   }
 }
 
+void* Context::alloc_pinned(std::size_t bytes) {
+  if (!use_pinned_ || bytes == 0) return nullptr;
+  cl_int st = CL_SUCCESS;
+  cl_mem m =
+      clCreateBuffer(context_, CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR, bytes, nullptr, &st);
+  void* h = nullptr;
+  if (st == CL_SUCCESS)
+    h = clEnqueueMapBuffer(queue_, m, CL_TRUE, CL_MAP_READ | CL_MAP_WRITE, 0, bytes, 0, nullptr,
+                           nullptr, &st);
+  if (st != CL_SUCCESS || !h) {
+    if (m) clReleaseMemObject(m);
+    return nullptr;
+  }
+  owned_.push_back({m, static_cast<char*>(h), bytes, bytes});
+  return h;
+}
+
+bool Context::free_pinned(void* p) {
+  for (std::size_t k = 0; k < owned_.size(); ++k)
+    if (owned_[k].host == p) {
+      cl_mem m = static_cast<cl_mem>(owned_[k].mem);
+      clFinish(queue_); // no transfer may still read it
+      clEnqueueUnmapMemObject(queue_, m, p, 0, nullptr, nullptr);
+      clFinish(queue_);
+      clReleaseMemObject(m);
+      owned_.erase(owned_.begin() + static_cast<std::ptrdiff_t>(k));
+      return true;
+    }
+  return false;
+}
+
+bool Context::is_pinned(const void* p, std::size_t bytes) const {
+  const char* c = static_cast<const char*>(p);
+  for (const PinnedBlock& b : owned_)
+    if (c >= b.host && c + bytes <= b.host + b.size) return true;
+  return false;
+}
+
 void Context::copy_when_drained(const void* from, void* to, std::size_t bytes) {
   copy_back_.push_back({from, to, bytes});
 }
 
 void Context::release_pinned() {
+  while (!owned_.empty())
+    free_pinned(owned_.back().host);
   for (PinnedBlock& b : pinned_) {
     cl_mem m = static_cast<cl_mem>(b.mem);
     clEnqueueUnmapMemObject(queue_, m, b.host, 0, nullptr, nullptr);

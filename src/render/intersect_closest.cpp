@@ -31,7 +31,7 @@ rc_hit Renderer::Impl::to_device(const geometry::Ray& ray,
   return out;
 }
 
-void Renderer::Impl::trace(std::span<const rc_ray> queue, HostQueue<rc_hit>& hits,
+void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
                            std::span<PrimaryResult> res, bool primaries) {
   Timed timed(prof, Phase::Trace);
   std::size_t n = queue.size();

@@ -10,7 +10,7 @@ namespace radcl::render {
 using namespace ambient;
 using namespace pipeline;
 
-void Renderer::Impl::test_leaks(std::span<const rc_ray> queue, HostQueue<rc_hit>& hits) {
+void Renderer::Impl::test_leaks(std::span<const rc_ray> queue, HitQueue& hits) {
   if (!leak_tester.active()) return;
   Timed timed(prof, Phase::Leaks);
   const std::size_t n = queue.size();

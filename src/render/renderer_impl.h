@@ -76,7 +76,7 @@ struct Renderer::Impl {
   // Per-wave device buffers and host queues, kept between waves and batches.
   ScratchPool scratch{ctx};
   std::vector<HostQueue<rc_ray>> spare_rays;
-  std::vector<HostQueue<rc_hit>> spare_hits;
+  std::vector<HitQueue> spare_hits;
   // The current generation's rays on the device (GPU); gen_queue is its host copy, whose rows
   // shade_slice names by address.
   GenerationMirror mirror{ctx};
@@ -129,7 +129,7 @@ struct Renderer::Impl {
 
   // ---- Nearest hits (intersect_closest.cpp) ----
   // Embree over a chunk; depth-0 hits also fill the primaries' geometric results.
-  void trace(std::span<const rc_ray> queue, HostQueue<rc_hit>& hits, std::span<PrimaryResult> res,
+  void trace(std::span<const rc_ray> queue, HitQueue& hits, std::span<PrimaryResult> res,
              bool primaries);
   // The device record of a geometry answer; a miss may still hit a distant source.
   rc_hit to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h) const;
@@ -140,7 +140,7 @@ struct Renderer::Impl {
   // Radiance's leak test for the cache records a chunk's lookups may use (ambient/leaks.h):
   // per hit on a surface that may look the cache up, the corral-marked records the kernel could
   // accept there are tested by a short ray; the blocked ones are listed for the kernel.
-  void test_leaks(std::span<const rc_ray> queue, HostQueue<rc_hit>& hits);
+  void test_leaks(std::span<const rc_ray> queue, HitQueue& hits);
   // The current render_batch's lists of records whose leak test failed, per hit: [count,
   // index...]; a hit names its list in nrm.w (docs/cache-internals.md).
   std::vector<std::uint32_t> leak_lists{0};
@@ -191,7 +191,7 @@ struct Renderer::Impl {
   // counted by rc_shade's count mode), enough room for about 98% of them.
   // A small chunk keeps the last sizes: counting would cost it a launch and a second shading of
   // each ray, more than re-shading its few rays that do not fit.
-  void size_slots(std::span<const rc_ray> queue, const HostQueue<rc_hit>& hits);
+  void size_slots(std::span<const rc_ray> queue, const HitQueue& hits);
   // Shades rays [rays, rays + n): writes their shadow requests and children, tests the
   // shadows, adds each ray's total into its primary's sum, appends the children to `next`.
   // One pass writes every ray's records into fixed slots; rays that did not fit are shaded

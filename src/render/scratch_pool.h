@@ -7,11 +7,13 @@
 #include <cstddef>
 #include <memory>
 #include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
+#include "radcl/device_types.h"
 
 namespace radcl::render {
 
@@ -80,16 +82,44 @@ template <class T> struct NoInit : std::allocator<T> {
     ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
   }
 };
-// A generation's rays or hits on the host.
+// A generation's rays on the host.
 template <class T> using HostQueue = std::vector<T, NoInit<T>>;
+
+// The same, in the device's pinned host memory where it has some (Context::alloc_pinned): a
+// chunk's hits, which Embree writes and the device reads, then cross without a copy.
+template <class T> struct PinnedAlloc {
+  using value_type = T;
+  using propagate_on_container_move_assignment = std::true_type;
+  using propagate_on_container_swap = std::true_type;
+  using is_always_equal = std::false_type;
+  device::Context* ctx = nullptr;
+  PinnedAlloc() = default;
+  explicit PinnedAlloc(device::Context* c) : ctx(c) {}
+  template <class U> PinnedAlloc(const PinnedAlloc<U>& o) noexcept : ctx(o.ctx) {}
+  T* allocate(std::size_t n) {
+    if (ctx)
+      if (void* p = ctx->alloc_pinned(n * sizeof(T))) return static_cast<T*>(p);
+    return std::allocator<T>().allocate(n);
+  }
+  void deallocate(T* p, std::size_t n) {
+    if (!(ctx && ctx->free_pinned(p))) std::allocator<T>().deallocate(p, n);
+  }
+  template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+  template <class U, class... A> void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+  template <class U> bool operator==(const PinnedAlloc<U>& o) const { return ctx == o.ctx; }
+};
+using HitQueue = std::vector<rc_hit, PinnedAlloc<rc_hit>>;
 
 // A vector lent from `pool` for a scope and given back, emptied but with its room, when the
 // scope ends (a batch inside another, as a record's hemisphere inside a cache pass, takes
 // others).
-template <class T> struct Spare {
-  std::vector<HostQueue<T>>& pool;
-  HostQueue<T> v;
-  explicit Spare(std::vector<HostQueue<T>>& p) : pool(p) {
+template <class V> struct Spare {
+  std::vector<V>& pool;
+  V v;
+  // `fresh`: an empty vector with the allocator to use when the pool has none.
+  explicit Spare(std::vector<V>& p, V fresh = V()) : pool(p), v(std::move(fresh)) {
     if (!pool.empty()) {
       v = std::move(pool.back());
       pool.pop_back();

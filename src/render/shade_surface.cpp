@@ -58,7 +58,7 @@ void Renderer::Impl::run_count(device::Buffer& rays, device::Buffer& hits, devic
   run_shade(l, n);
 }
 
-void Renderer::Impl::size_slots(std::span<const rc_ray> queue, const HostQueue<rc_hit>& hits) {
+void Renderer::Impl::size_slots(std::span<const rc_ray> queue, const HitQueue& hits) {
   if (queue.size() <= kUncountedWave) return;
   Timed timed(prof, Phase::Slots);
   std::size_t n = queue.size(), stride = std::max<std::size_t>(1, n / 512);
@@ -177,7 +177,10 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
       mirror.copy_current(brays, static_cast<std::size_t>(rays - gen_queue.data()), n);
   if (!from_mirror) write_rows(brays, rays, n * sizeof(rc_ray));
   device::Buffer& bhits = scratch(kHits, n * sizeof(rc_hit));
-  write_rows(bhits, hit, n * sizeof(rc_hit));
+  if (ctx.is_pinned(hit, n * sizeof(rc_hit))) // Embree wrote them into pinned memory
+    bhits.write_pinned(hit, n * sizeof(rc_hit));
+  else
+    write_rows(bhits, hit, n * sizeof(rc_hit));
   step(PhaseProfile::StepUpload);
   const std::uint32_t csh = cap_shadow, csp = cap_spawn;
   device::Buffer& bslot_sh = scratch(kShadowSlots, n * csh * sizeof(rc_shadow));

@@ -65,10 +65,10 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   }
   // The generation queues come from a pool that outlives the batch: growing fresh ones to
   // millions of rays in every batch paged in (and cleared) new memory each time.
-  Spare<rc_ray> queue_hold(spare_rays), next_hold(spare_rays);
-  Spare<rc_hit> hits_hold(spare_hits);
+  Spare<HostQueue<rc_ray>> queue_hold(spare_rays), next_hold(spare_rays);
+  Spare<HitQueue> hits_hold(spare_hits, HitQueue(PinnedAlloc<rc_hit>(&ctx)));
   HostQueue<rc_ray>& queue = queue_hold.v;
-  HostQueue<rc_hit>& hits = hits_hold.v;
+  HitQueue& hits = hits_hold.v;
   // Room for a whole generation up front (address space only until used): growing by doubling
   // paged in and copied 390 MB in 2,000 sensors' run on 2 cores, a tenth of its CPU time.
   for (HostQueue<rc_ray>* v : {&queue, &next_hold.v})
@@ -151,10 +151,13 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   // device command stays on this thread.
   bool first_wave = true;
   HostQueue<rc_ray>& next = next_hold.v;
-  Spare<rc_hit> ahead_hold(spare_hits);
-  HostQueue<rc_hit>& ahead = ahead_hold.v;
+  Spare<HitQueue> ahead_hold(spare_hits, HitQueue(PinnedAlloc<rc_hit>(&ctx)));
+  HitQueue& ahead = ahead_hold.v;
   const std::size_t chunk = chunk_rays();
   const bool overlap = !std::getenv("RADCL_NO_OVERLAP");
+  // A chunk's room at once: pinned memory is costly to take and give back.
+  for (HitQueue* h : {&hits, &ahead})
+    if (h->capacity() < chunk) h->reserve(chunk);
   mirror.start_batch();
   while (!queue.empty()) {
     const std::size_t n = queue.size();
@@ -163,7 +166,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     const auto part_at = [&](std::size_t a) {
       return std::span<const rc_ray>(queue.data() + a, std::min(n, a + chunk) - a);
     };
-    const auto hits_at = [&](std::size_t a, HostQueue<rc_hit>& h) {
+    const auto hits_at = [&](std::size_t a, HitQueue& h) {
       if (first_wave && !meters.empty())
         h.assign(meters.begin() + static_cast<std::ptrdiff_t>(a),
                  meters.begin() + static_cast<std::ptrdiff_t>(std::min(n, a + chunk)));

@@ -39,6 +39,9 @@ public:
   _cl_mem* handle() const { return mem_; }
 
   void write(const void* src, std::size_t bytes, std::size_t offset = 0);
+  // A write straight from memory Context::alloc_pinned gave, without a copy: `src` must stay
+  // as it is until the queue drains (elsewhere it is an ordinary write).
+  void write_pinned(const void* src, std::size_t bytes, std::size_t offset = 0);
   void read(void* dst, std::size_t bytes, std::size_t offset = 0) const;
   // `bytes` of `src` from src_offset to this buffer at `offset`, on the device, without waiting
   // (in queue order with the commands around it).

@@ -49,6 +49,14 @@ public:
   // does not, so a wave's reads and writes share one wait (docs/internals.md).
   void* pinned(std::size_t bytes);
   bool pins() const { return use_pinned_; }
+  // Pinned host memory of the caller's own, held until free_pinned (or the context ends): a
+  // queue the host fills (Embree's hits) goes to the device from there without a copy.
+  // nullptr where there is none (zero-copy devices, RADCL_PINNED=0, the driver refused).
+  void* alloc_pinned(std::size_t bytes);
+  // Gives back memory alloc_pinned gave; false (nothing done) for any other pointer.
+  bool free_pinned(void* p);
+  // Whether [p, p + bytes) lies in memory alloc_pinned gave.
+  bool is_pinned(const void* p, std::size_t bytes) const;
   // Copies `bytes` from `from` (pinned room a read is filling) to `to` once the queue drains.
   void copy_when_drained(const void* from, void* to, std::size_t bytes);
   // Every command enqueued so far has completed: reads into pinned room reach their
@@ -75,7 +83,7 @@ private:
     std::size_t size, used;
   };
   bool use_pinned_ = false;
-  std::vector<PinnedBlock> pinned_;
+  std::vector<PinnedBlock> pinned_, owned_;
   std::size_t pin_block_ = 0;
   struct CopyBack {
     const void* from;
