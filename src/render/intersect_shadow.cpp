@@ -32,11 +32,10 @@ bool Renderer::Impl::trace_shadows(device::Buffer& shadows, std::size_t n,
     view = view_shadows_later(shadows, n);
     ctx.finish();
   }
-  constexpr std::size_t kChunk = 1u << 18;
   bool done = false;
-  for (std::size_t a = 0; a < n; a += kChunk) {
-    const bool last = a + kChunk >= n;
-    done = trace_shadow_chunk(shadows, view, a, std::min(kChunk, n - a), blocked.data(),
+  for (std::size_t a = 0; a < n; a += kShadowChunk) {
+    const bool last = a + kShadowChunk >= n;
+    done = trace_shadow_chunk(shadows, view, a, std::min(kShadowChunk, n - a), blocked.data(),
                               last ? after_step : std::function<void()>{});
   }
   return done;
@@ -76,7 +75,8 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     std::size_t m = cur.size();
     Timed timed(prof, Phase::ShadowTrace);
     // One pass per ray: the query and its device record.
-    std::vector<rc_hit>& hits = shadow_hits;
+    HitQueue& hits = shadow_hits;
+    if (hits.capacity() < kShadowChunk) hits.reserve(kShadowChunk); // pinned room is costly to take
     hits.resize(m);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const auto& range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -97,7 +97,10 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     // The step works on the requests in place: only the hits, the slots and the states cross.
     device::Buffer& bslot = scratch(kStepSlots, slot);
     device::Buffer& bhits = scratch(kStepHits, m * sizeof(rc_hit));
-    write_rows(bhits, hits.data(), m * sizeof(rc_hit));
+    if (ctx.is_pinned(hits.data(), m * sizeof(rc_hit)))
+      bhits.write_pinned(hits.data(), m * sizeof(rc_hit));
+    else
+      write_rows(bhits, hits.data(), m * sizeof(rc_hit));
     device::Buffer& bstate = scratch(kStepState, state);
     device::Buffer& bnext = scratch(kStepView, m * sizeof(ShadowView));
     std::uint32_t um = static_cast<std::uint32_t>(m);

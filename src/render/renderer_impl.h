@@ -247,7 +247,8 @@ struct Renderer::Impl {
                           const std::function<void()>& after_step);
   // A step's rays, their answers, states and slots, kept from step to step.
   std::vector<ShadowView> shadow_cur;
-  std::vector<rc_hit> shadow_hits;
+  HitQueue shadow_hits{PinnedAlloc<rc_hit>(&ctx)}; // pinned: they cross without a copy
+  static constexpr std::size_t kShadowChunk = std::size_t{1} << 18; // requests traced at once
   std::vector<char> peek_view, peek_view_step;
   std::vector<std::uint32_t> shadow_state, shadow_slot;
 
