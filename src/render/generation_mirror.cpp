@@ -7,15 +7,18 @@
 #include "radcl/util/error.h"
 
 namespace radcl::render {
-namespace {
-// A generation past this many bytes stays on the host (a buffer this large may exceed the
-// device's largest allocation; such waves are split by the batch size long before).
-constexpr std::size_t kMaxBytes = std::size_t{3} << 30;
-} // namespace
-
 GenerationMirror::GenerationMirror(device::Context& ctx) : ctx_(ctx) {
   const char* e = std::getenv("RADCL_MIRROR"); // "0": every generation uploaded from the host
   on_ = !ctx.zero_copy() && !(e && std::string(e) == "0");
+  // A generation past this many bytes stays on the host: each of the two copies takes at most
+  // the device's largest allocation, a tenth of its memory and 3 GB (a GPU allocates lazily, so
+  // an allocation that does not fit would fail at a later command, not here). Waves are split
+  // by the batch size long before on a large device.
+  std::uint64_t cap = std::uint64_t{3} << 30;
+  const device::DeviceInfo& d = ctx.info();
+  if (d.max_alloc) cap = std::min(cap, d.max_alloc);
+  if (d.global_mem) cap = std::min(cap, d.global_mem / 10);
+  max_bytes_ = static_cast<std::size_t>(cap);
 }
 
 void GenerationMirror::start_batch() {
@@ -33,9 +36,9 @@ bool GenerationMirror::room(std::size_t rays, std::size_t keep) {
   device::Buffer& b = buf_[1 - cur_];
   const std::size_t bytes = rays * sizeof(rc_ray);
   if (b.size() >= bytes) return true;
-  if (bytes > kMaxBytes) return false;
+  if (bytes > max_bytes_) return false;
   const std::size_t grown =
-      std::min(kMaxBytes, std::max({bytes, 2 * b.size(), std::size_t{1} << 22}));
+      std::min(max_bytes_, std::max({bytes, 2 * b.size(), std::size_t{1} << 22}));
   try {
     device::Buffer more(ctx_, grown);
     if (keep) more.copy_from(b, keep * sizeof(rc_ray));

@@ -40,6 +40,7 @@ private:
   device::Buffer buf_[2];
   int cur_ = 0;
   bool on_ = false, cur_ok_ = false, next_ok_ = false;
+  std::size_t max_bytes_ = 0; // of one copy
 };
 
 } // namespace radcl::render
