@@ -50,30 +50,18 @@ bool GenerationMirror::room(std::size_t rays, std::size_t keep) {
 }
 
 void GenerationMirror::append(const device::Buffer& src, std::size_t at, std::size_t n) {
-  if (!next_ok_ || n == 0) return;
-  if (!room(at + n, at)) {
-    next_ok_ = false;
-    return;
-  }
-  buf_[1 - cur_].copy_from(src, n * sizeof(rc_ray), 0, at * sizeof(rc_ray));
+  if (device::Buffer* b = n ? next_rows(at, n) : nullptr)
+    b->copy_from(src, n * sizeof(rc_ray), 0, at * sizeof(rc_ray));
 }
 
 void GenerationMirror::upload(const rc_ray* rows, std::size_t at, std::size_t n) {
-  if (!next_ok_ || n == 0) return;
-  if (!room(at + n, at)) {
-    next_ok_ = false;
-    return;
-  }
-  buf_[1 - cur_].write(rows, n * sizeof(rc_ray), at * sizeof(rc_ray));
+  if (device::Buffer* b = n ? next_rows(at, n) : nullptr)
+    b->write(rows, n * sizeof(rc_ray), at * sizeof(rc_ray));
 }
 
 device::Buffer* GenerationMirror::next_rows(std::size_t at, std::size_t n) {
-  if (!next_ok_) return nullptr;
-  if (!room(at + n, at)) {
-    next_ok_ = false;
-    return nullptr;
-  }
-  return &buf_[1 - cur_];
+  if (next_ok_ && !room(at + n, at)) next_ok_ = false;
+  return next_ok_ ? &buf_[1 - cur_] : nullptr;
 }
 
 void GenerationMirror::advance() {

@@ -97,10 +97,7 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     // The step works on the requests in place: only the hits, the slots and the states cross.
     device::Buffer& bslot = scratch(kStepSlots, slot);
     device::Buffer& bhits = scratch(kStepHits, m * sizeof(rc_hit));
-    if (ctx.is_pinned(hits.data(), m * sizeof(rc_hit)))
-      bhits.write_pinned(hits.data(), m * sizeof(rc_hit));
-    else
-      write_rows(bhits, hits.data(), m * sizeof(rc_hit));
+    write_rows(bhits, hits.data(), m * sizeof(rc_hit));
     device::Buffer& bstate = scratch(kStepState, state);
     device::Buffer& bnext = scratch(kStepView, m * sizeof(ShadowView));
     std::uint32_t um = static_cast<std::uint32_t>(m);

@@ -99,7 +99,7 @@ using device::parallel_copy;
 // into its allocation with every core.
 inline void write_rows(device::Buffer& b, const void* src, std::size_t bytes) {
   if (!b.zero_copy()) {
-    b.write(src, bytes);
+    b.write_pinned(src, bytes); // from a HitQueue's pinned memory without a copy
     return;
   }
   void* p = b.map();

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <memory>
-#include <new>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
 #include "radcl/device_types.h"
+#include "radcl/util/no_init.h"
 
 namespace radcl::render {
 
@@ -69,26 +69,13 @@ private:
   std::vector<device::Buffer> pool_;
 };
 
-// An allocator whose resize() leaves new elements of a trivial type uninitialised: the queues'
-// new rows are always written over (children read back from the device, hits from Embree), and
-// zeroing them first cost a pass over every ray of every generation (6 GB in 10,000 sensors at
-// -ab 2 -aa 0 -ad 1024).
-template <class T> struct NoInit : std::allocator<T> {
-  template <class U> struct rebind { using other = NoInit<U>; };
-  NoInit() = default;
-  template <class U> NoInit(const NoInit<U>&) noexcept {}
-  template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
-  template <class U, class... A> void construct(U* p, A&&... a) {
-    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
-  }
-};
-// A generation's rays on the host.
+// A generation's rays on the host, new rows not zeroed (they are always written over).
 template <class T> using HostQueue = std::vector<T, NoInit<T>>;
 
 // The same, in the device's pinned host memory where it has some (Context::alloc_pinned): a
 // chunk's hits, which Embree writes and the device reads, then cross without a copy.
-template <class T> struct PinnedAlloc {
-  using value_type = T;
+template <class T> struct PinnedAlloc : NoInit<T> {
+  template <class U> struct rebind { using other = PinnedAlloc<U>; };
   using propagate_on_container_move_assignment = std::true_type;
   using propagate_on_container_swap = std::true_type;
   using is_always_equal = std::false_type;
@@ -103,10 +90,6 @@ template <class T> struct PinnedAlloc {
   }
   void deallocate(T* p, std::size_t n) {
     if (!(ctx && ctx->free_pinned(p))) std::allocator<T>().deallocate(p, n);
-  }
-  template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
-  template <class U, class... A> void construct(U* p, A&&... a) {
-    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
   }
   template <class U> bool operator==(const PinnedAlloc<U>& o) const { return ctx == o.ctx; }
 };

@@ -101,32 +101,24 @@ void Renderer::Impl::reshade(const rc_ray* rays, const rc_hit* hit,
     r[k] = rays[over[k]];
     h[k] = hit[over[k]];
     soff[k] = shadow_off[over[k]]; // straight into their packed places
-    poff[k] = nsp[over[k]];
+    // Children: where the device keeps the next generation, straight into their places there
+    // (the others are there already), which is then read whole; else into room of their own.
+    poff[k] = into ? static_cast<std::uint32_t>(base + spawn_off[over[k]]) : nsp[over[k]];
   }
-  if (into) {
-    // Straight into their places in the device's copy of the next generation (the others are
-    // there already), which is then read whole.
-    for (std::size_t k = 0; k < m; ++k)
-      poff[k] = static_cast<std::uint32_t>(base + spawn_off[over[k]]);
-    device::Buffer& brays = scratch(kStepRays, r);
-    device::Buffer& bhits = scratch(kStepHits, h);
-    device::Buffer& bsoff = scratch(kSuperOff, soff);
-    device::Buffer& bpoff = scratch(kSuperData, poff);
-    device::Buffer& bimm = scratch(kTotal, m * sizeof(rc_float4));
-    run_shade(ShadeLaunch{&brays, &bhits, &bsoff, &bpoff, &shadows, into, &bimm}, m);
-    const std::size_t total = spawn_off.empty() ? 0 : spawn_off.back() + nsp.back();
-    into->read_later(children, total * sizeof(rc_ray), base * sizeof(rc_ray));
-    ctx.finish();
-    return;
-  }
-  std::uint32_t tsp = prefix_sum(poff);
+  const std::uint32_t tsp = into ? 0 : prefix_sum(poff);
   device::Buffer& brays = scratch(kStepRays, r);
   device::Buffer& bhits = scratch(kStepHits, h);
   device::Buffer& bsoff = scratch(kSuperOff, soff);
   device::Buffer& bpoff = scratch(kSuperData, poff);
-  device::Buffer& bsp = scratch(kSpawned, std::size_t{tsp} * sizeof(rc_ray));
+  device::Buffer& bsp = into ? *into : scratch(kSpawned, std::size_t{tsp} * sizeof(rc_ray));
   device::Buffer& bimm = scratch(kTotal, m * sizeof(rc_float4));
   run_shade(ShadeLaunch{&brays, &bhits, &bsoff, &bpoff, &shadows, &bsp, &bimm}, m);
+  if (into) {
+    const std::size_t total = spawn_off.back() + nsp.back();
+    into->read_later(children, total * sizeof(rc_ray), base * sizeof(rc_ray));
+    ctx.finish();
+    return;
+  }
   std::vector<rc_ray> sp(tsp);
   bsp.read_later(sp.data(), sp.size() * sizeof(rc_ray));
   ctx.finish();
@@ -177,10 +169,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
       mirror.copy_current(brays, static_cast<std::size_t>(rays - gen_queue.data()), n);
   if (!from_mirror) write_rows(brays, rays, n * sizeof(rc_ray));
   device::Buffer& bhits = scratch(kHits, n * sizeof(rc_hit));
-  if (ctx.is_pinned(hit, n * sizeof(rc_hit))) // Embree wrote them into pinned memory
-    bhits.write_pinned(hit, n * sizeof(rc_hit));
-  else
-    write_rows(bhits, hit, n * sizeof(rc_hit));
+  write_rows(bhits, hit, n * sizeof(rc_hit));
   step(PhaseProfile::StepUpload);
   const std::uint32_t csh = cap_shadow, csp = cap_spawn;
   device::Buffer& bslot_sh = scratch(kShadowSlots, n * csh * sizeof(rc_shadow));

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "radcl/device_types.h"
+#include "radcl/util/no_init.h"
 
 namespace radcl::render {
 
@@ -83,7 +84,7 @@ public:
 private:
   enum class Kind : std::uint8_t { Primary, Ray, Cell, Hemi };
   // Nodes and hemispheres are made by the million per batch, in room grown without clearing it
-  // first (Uninit): every field is written where one is made (fresh_node, make_hemi).
+  // first (NoInit): every field is written where one is made (fresh_node, make_hemi).
   struct Node {
     Kind kind;
     std::uint32_t traced; // trace mode: the ray's record
@@ -103,16 +104,6 @@ private:
     std::uint32_t node, first_cell, ns, budget, which;
     bool second; // the super-sample decision has been made
   };
-  template <class T> struct Uninit : std::allocator<T> {
-    template <class U> struct rebind { using other = Uninit<U>; };
-    Uninit() = default;
-    template <class U> Uninit(const Uninit<U>&) noexcept {}
-    template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
-    template <class U, class... A> void construct(U* p, A&&... a) {
-      ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
-    }
-  };
-
   void add(std::uint32_t node, const rc_float4& c, bool mirrored);
   // The hemisphere whose first samples begin at children[k] (m of them) of `ray`: its node at
   // `node`, its cells after it, its record at hemis_[hemi]; the samples point at their cells.
@@ -128,8 +119,8 @@ private:
   void settle(std::uint32_t node, std::vector<SuperRequest>& requests);
   std::vector<std::uint32_t> allocate(const Hemi& h) const;
 
-  std::vector<Node, Uninit<Node>> nodes_;
-  std::vector<Hemi, Uninit<Hemi>> hemis_;
+  std::vector<Node, NoInit<Node>> nodes_;
+  std::vector<Hemi, NoInit<Hemi>> hemis_;
   std::vector<SuperRequest> requests_;
   std::vector<Traced> traced_;
   bool trace_ = false;
