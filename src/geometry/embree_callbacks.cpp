@@ -27,11 +27,15 @@ void write_bounds(const std::array<Vec3, 2>& b, RTCBounds* out) {
 
 struct LocalRay {
   Vec3 o, d;
+  double len; // |d|
 };
 
 LocalRay local_ray(const RayContext& rc, unsigned inst_id) {
+  // The main scene's transform is the translation by minus the centre (builder.cpp).
+  if (inst_id == RTC_INVALID_GEOMETRY_ID) return {rc.org0, rc.dir, rc.len0};
   const PlacementRecord& pr = rc.impl->record_for_instance(inst_id);
-  return {pr.from_world.point(rc.org), pr.from_world.vector(rc.dir)};
+  const Vec3 d = pr.from_world.vector(rc.dir);
+  return {pr.from_world.point(rc.org), d, length(d)};
 }
 
 } // namespace
@@ -56,7 +60,7 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
   const double bound = std::min(rc->tmax, rc->best ? std::nextafter(rc->best_t, INFINITY)
                                                    : static_cast<double>(tfar));
   const AnalyticSurface& s = proto->analytic[args->primID];
-  if (!intersect_analytic(s, lr.o, lr.d, rc->tmin, bound, t, n, rc->on * length(lr.d))) return;
+  if (!intersect_analytic(s, lr.o, lr.d, rc->tmin, bound, t, n, rc->on * lr.len)) return;
   const std::uint64_t key = tie_key(inst, static_cast<std::uint32_t>(s.object));
   if (rc->loses(t, key)) return;
   rc->accept(t, key);
@@ -86,8 +90,7 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
   double t;
   Vec3 n;
   if (intersect_analytic(proto->analytic[args->primID], lr.o, lr.d, rc->tmin,
-                         std::min(rc->tmax, static_cast<double>(tfar)), t, n,
-                         rc->on * length(lr.d)))
+                         std::min(rc->tmax, static_cast<double>(tfar)), t, n, rc->on * lr.len))
     tfar = -std::numeric_limits<float>::infinity();
 }
 
@@ -105,8 +108,8 @@ void triangle_filter(const RTCFilterFunctionNArguments* args) {
   double t;
   Vec3 n;
   // A ray whose origin lies in the triangle's plane (within rc->on) cannot meet it again.
-  if (!triangle_distance(*proto, prim, lr.o, lr.d, t, n) || !(t > rc->tmin && t < rc->tmax) ||
-      std::abs(t * dot(n, lr.d)) <= rc->on * length(lr.d)) {
+  if (!triangle_distance(*proto, prim, lr.o, lr.d, lr.len, t, n) ||
+      !(t > rc->tmin && t < rc->tmax) || std::abs(t * dot(n, lr.d)) <= rc->on * lr.len) {
     args->valid[0] = 0;
     return;
   }

@@ -96,6 +96,10 @@ struct RayContext {
   RTCIntersectContext ctx;
   const SceneGeometry::Impl* impl = nullptr;
   Vec3 org{}, dir{}; // world, dir unit
+  // The main scene's local ray (org less the centre) and |dir|, made once per query: most
+  // candidates are its surfaces, and each filter call would otherwise transform and measure.
+  Vec3 org0{};
+  double len0 = 1;
   double tmin = 0, tmax = 0;
   double shift = 0; // a far origin moved this far along the ray to the scene (setup in query)
   // An origin this close (world distance) to a surface lies on it (float rounding of the point
@@ -112,7 +116,7 @@ struct RayContext {
   bool best = false;
   double best_t = 0;
   std::uint64_t best_key = 0;
-  Vec3 best_normal{}; // a triangle's (local) plane normal: the answer needs not compute it again
+  Vec3 best_normal{};   // a triangle's (local) plane normal: the answer needs not compute it again
   bool closest = false; // a closest-hit query (not an occlusion test)
   bool raw = false;     // SceneGeometry::intersect_raw: the filter accepts every candidate
   // Whether a candidate at exact distance cand_t loses to the current closest hit.
@@ -147,8 +151,9 @@ void build_mesh_prototype(RTCDevice device, RTCScene scene, const scene::Triangl
 
 // Exact parametric distance along (o, d), prototype-centred, to Embree triangle `prim` of the
 // prototype; false if the ray is parallel to it (Radiance's test).
-bool triangle_distance(const Prototype& p, unsigned prim, const Vec3& o, const Vec3& d, double& t,
-                       Vec3& normal);
+// `len` is |d|.
+bool triangle_distance(const Prototype& p, unsigned prim, const Vec3& o, const Vec3& d, double len,
+                       double& t, Vec3& normal);
 
 // Embree callbacks (embree_callbacks.cpp).
 void user_bounds(const RTCBoundsFunctionArguments* args);

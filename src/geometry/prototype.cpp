@@ -104,8 +104,8 @@ void build_mesh_prototype(RTCDevice device, RTCScene scene, const scene::Triangl
   proto.tri_geom = attach_triangles(device, scene, mesh.positions, proto.centre, tris, proto);
 }
 
-bool triangle_distance(const Prototype& p, unsigned prim, const Vec3& o, const Vec3& d, double& t,
-                       Vec3& normal) {
+bool triangle_distance(const Prototype& p, unsigned prim, const Vec3& o, const Vec3& d, double len,
+                       double& t, Vec3& normal) {
   if (p.mesh != nullptr) {
     // Mesh faces use the triangle's own plane, as Radiance's mesh code does.
     const auto& tri = p.mesh->triangles[p.mesh_triangle[prim]];
@@ -119,7 +119,7 @@ bool triangle_distance(const Prototype& p, unsigned prim, const Vec3& o, const V
   }
   const PolygonRecord& pol = p.polygons[p.triangle_polygon[prim]];
   const double den = dot(pol.normal, d);
-  if (std::abs(den) <= kParallel * length(d)) return false;
+  if (std::abs(den) <= kParallel * len) return false;
   t = (pol.offset - dot(pol.normal, o)) / den;
   normal = pol.normal;
   return true;

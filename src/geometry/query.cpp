@@ -61,6 +61,9 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
   }
   rc.tmax = tmax;
   if (!(rc.tmax > rc.tmin)) return false;
+  // As the main scene's from_world (a translation) maps rc.org and rc.dir, bit for bit.
+  rc.org0 = sub(rc.org, g.centre);
+  rc.len0 = length(rc.dir);
   ray.org_x = static_cast<float>(o[0]);
   ray.org_y = static_cast<float>(o[1]);
   ray.org_z = static_cast<float>(o[2]);
@@ -113,7 +116,7 @@ std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, 
       n = rc.best_normal;
     } else {
       const Vec3 o = rec.from_world.point(rc.org), d = rec.from_world.vector(rc.dir);
-      if (!triangle_distance(p, rh.hit.primID, o, d, h.t, n)) return std::nullopt;
+      if (!triangle_distance(p, rh.hit.primID, o, d, length(d), h.t, n)) return std::nullopt;
     }
     h.u = rh.hit.u;
     h.v = rh.hit.v;
@@ -180,7 +183,7 @@ void SceneGeometry::intersect_raw(std::span<const Ray> rays, std::span<float> t)
       rh.ray.dir_x = static_cast<float>(q.dir[0]);
       rh.ray.dir_y = static_cast<float>(q.dir[1]);
       rh.ray.dir_z = static_cast<float>(q.dir[2]);
-      rh.ray.tnear = static_cast<float>(q.tmin);
+      rh.ray.tnear = static_cast<float>(std::max(0.0, q.tmin)); // a negative tmin: none
       rh.ray.tfar = std::numeric_limits<float>::infinity();
       rh.ray.time = 0;
       rh.ray.mask = ~0u;

@@ -5,7 +5,7 @@
 // The rays are those of an -aa 0 irradiance run (peers.sh P2): from each sensor, a stratified
 // cosine-weighted hemisphere of n x n directions (the first bounce), then from each point
 // they hit one cosine-weighted direction about the surface's normal facing the ray (the
-// second bounce, incoherent).
+// second bounce, incoherent), leaving the surface as the kernels' rays do.
 //
 // usage: bench_embree_rays OCTREE SENSORS [n (default 32)] [repeats (default 3)]
 // Prints, per ray set, the best of the repeats: rays/s of each query and their ratio.
@@ -26,9 +26,9 @@
 #include "radcl/scene/loader.h"
 #include "radcl/util/error.h"
 
-using radcl::geometry::Vec3d;
 using radcl::geometry::Hit;
 using radcl::geometry::Ray;
+using radcl::geometry::Vec3d;
 
 namespace {
 
@@ -104,15 +104,23 @@ int main(int argc, char** argv) {
     }
     std::vector<std::optional<Hit>> hits(first.size());
     g.intersect(first, hits);
+    // The second bounce leaves its surface as the kernels' rays do (rc_leave): from beside it on
+    // the side it goes to, by max(epsilon, 8e-7 x the point's largest centred coordinate),
+    // with no minimum distance (a negative tmin, RC_TMIN_OFF).
+    const Vec3d c = g.centre();
     std::vector<Ray> second;
     for (std::size_t i = 0; i < first.size(); ++i) {
       if (!hits[i]) continue;
       Vec3d n = hits[i]->normal;
       if (!hits[i]->front) n = {-n[0], -n[1], -n[2]};
+      const Vec3d& p = hits[i]->point;
+      const double off =
+          std::max(g.epsilon(), 8e-7 * std::max({std::fabs(p[0] - c[0]), std::fabs(p[1] - c[1]),
+                                                 std::fabs(p[2] - c[2])}));
       Ray r;
-      r.org = hits[i]->point;
+      r.org = {p[0] + off * n[0], p[1] + off * n[1], p[2] + off * n[2]};
       r.dir = cosine_dir(n, u01(rng), u01(rng));
-      r.tmin = g.epsilon();
+      r.tmin = -1;
       second.push_back(r);
     }
     std::printf("%s: %d host threads\n", argv[1], tbb::info::default_concurrency());
