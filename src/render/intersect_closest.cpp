@@ -42,8 +42,13 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
   gh.resize(n);
   hits.resize(n);
   constexpr std::uint32_t kKept = RC_RAY_MIRRORED | RC_RAY_THROUGH;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+  // Rays of those kinds are rare: the loops below visit only the ranges that hold one, not
+  // every 112-byte row of the queue on one core.
+  constexpr std::size_t kRange = 256;
+  std::vector<std::uint8_t>& kept = trace_kept;
+  kept.assign((n + kRange - 1) / kRange, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kept.size()), [&](const auto& ranges) {
+    for (std::size_t i = ranges.begin() * kRange; i < std::min(n, ranges.end() * kRange); ++i) {
       const rc_ray& r = queue[i];
       geometry::Ray ray;
       ray.org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
@@ -55,6 +60,7 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
       std::optional<geometry::Hit> h =
           geom.intersect(ray.org, ray.dir, ray.tmin, ray.tmax, ray.free_origin);
       hits[i] = to_device(ray, h);
+      if (r.flags & kKept) kept[i / kRange] = 1; // this task's own ranges
       if (primaries || (r.flags & kKept)) gh[i] = std::move(h);
     }
   });
@@ -65,25 +71,26 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                      (a[2] - b[2]) * (a[2] - b[2]));
   };
-  for (std::size_t i = 0; i < n; ++i)
-    if ((queue[i].flags & RC_RAY_MIRRORED) &&
-        (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED &&
-        queue[i].depth == root_depth[slot(queue[i].primary)] + 1) {
-      PrimaryResult& pr = results[slot(queue[i].primary)];
-      pr.mirror_t = (queue[i].flags & RC_RAY_TILTED) ? 0.0
-                    : gh[i]                          ? dist(gh[i]->point, pr.point)
-                                                     : 1e10;
+  // In queue order, as before: a primary's straight continuation adds up along it.
+  for (std::size_t b = 0; b < kept.size(); ++b) {
+    if (!kept[b]) continue;
+    for (std::size_t i = b * kRange; i < std::min(n, (b + 1) * kRange); ++i) {
+      const std::uint32_t f = queue[i].flags;
+      if ((f & RC_RAY_MIRRORED) && (f & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED &&
+          queue[i].depth == root_depth[slot(queue[i].primary)] + 1) {
+        PrimaryResult& pr = results[slot(queue[i].primary)];
+        pr.mirror_t = (f & RC_RAY_TILTED) ? 0.0 : gh[i] ? dist(gh[i]->point, pr.point) : 1e10;
+      }
+      // The straight continuation through transmitting surfaces: its lengths add up (X), each
+      // from the surface point the last one met.
+      if ((f & RC_RAY_THROUGH) && (f & RC_RAY_KIND_MASK) == RC_RAY_TRANSMITTED) {
+        PrimaryResult& pr = results[slot(queue[i].primary)];
+        const Vec3d& from = pr.through_t < 0 ? pr.point : pr.through_at;
+        pr.through_t = std::max(pr.through_t, 0.0) + (gh[i] ? dist(gh[i]->point, from) : 1e10);
+        if (gh[i]) pr.through_at = gh[i]->point;
+      }
     }
-  // The straight continuation through transmitting surfaces: its lengths add up (X), each
-  // from the surface point the last one met.
-  for (std::size_t i = 0; i < n; ++i)
-    if ((queue[i].flags & RC_RAY_THROUGH) &&
-        (queue[i].flags & RC_RAY_KIND_MASK) == RC_RAY_TRANSMITTED) {
-      PrimaryResult& pr = results[slot(queue[i].primary)];
-      const Vec3d& from = pr.through_t < 0 ? pr.point : pr.through_at;
-      pr.through_t = std::max(pr.through_t, 0.0) + (gh[i] ? dist(gh[i]->point, from) : 1e10);
-      if (gh[i]) pr.through_at = gh[i]->point;
-    }
+  }
   if (!primaries) return;
   for (std::size_t i = 0; i < n; ++i) {
     PrimaryResult& r = res[slot(queue[i].primary)];

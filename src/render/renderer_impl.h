@@ -135,6 +135,7 @@ struct Renderer::Impl {
   rc_hit to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h) const;
   // Embree's answers for a chunk (where they are read), kept from chunk to chunk.
   std::vector<std::optional<geometry::Hit>> trace_answers;
+  std::vector<std::uint8_t> trace_kept; // which 256-ray ranges of a traced chunk hold kept rays
 
   // ---- The leak test (leak_test.cpp) ----
   // Radiance's leak test for the cache records a chunk's lookups may use (ambient/leaks.h):

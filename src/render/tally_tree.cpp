@@ -1,6 +1,7 @@
 #include "radcl/render/tally_tree.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "radcl/rng.h"
@@ -164,9 +165,13 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
   new_nodes_.resize(n);
   new_hemis_.resize(n);
   plain_.resize(n);
-  // Each ray's hemispheres and the nodes they need, then their places in serial order.
+  // Each ray's hemispheres and the nodes they need, then their places in serial order; and
+  // whether the slice runs in primary order (see below), found on the way.
+  std::atomic<bool> unordered{false};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      if (i > 0 && rays[i].primary < rays[i - 1].primary)
+        unordered.store(true, std::memory_order_relaxed);
       std::uint32_t nodes = 0, hemis = 0, plain = 0;
       for (std::size_t k = 0; k < count[i];) {
         const std::size_t m = run_length(children + off[i], k, count[i]);
@@ -228,17 +233,19 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
     }
   };
   constexpr std::size_t kRun = 4096;
-  const bool ordered = std::is_sorted(
-      rays, rays + n, [](const rc_ray& a, const rc_ray& b) { return a.primary < b.primary; });
-  if (!ordered || n < 2 * kRun) {
+  if (unordered.load() || n < 2 * kRun) {
     finish(0, n, requests_);
     return;
   }
+  // Cuts where a primary's rays begin (a primary may have thousands: searched, not walked).
   std::vector<std::size_t> cut{0};
   for (std::size_t at = kRun; at < n; at += kRun) {
-    std::size_t c = std::max(at, cut.back() + 1);
-    while (c < n && rays[c].primary == rays[c - 1].primary)
-      ++c;
+    const std::size_t from = std::max(at, cut.back() + 1);
+    const std::uint32_t p = rays[from - 1].primary;
+    const std::size_t c = static_cast<std::size_t>(
+        std::partition_point(rays + from, rays + n,
+                             [p](const rc_ray& r) { return r.primary == p; }) -
+        rays);
     if (c >= n) break;
     cut.push_back(c);
     at = c;
