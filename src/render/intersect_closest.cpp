@@ -1,4 +1,5 @@
 // Stage: the nearest hit of every ray of a chunk (Embree on the host), as the kernels' records.
+#include <chrono>
 #include <cmath>
 
 #include "pipeline_util.h"
@@ -9,6 +10,17 @@ namespace radcl::render {
 
 using namespace ambient;
 using namespace pipeline;
+
+geometry::Ray Renderer::Impl::query_ray(const rc_ray& r, bool primary) const {
+  geometry::Ray ray;
+  ray.org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
+  ray.dir = {r.dir.x, r.dir.y, r.dir.z};
+  ray.tmin = r.org.w;
+  // The kernels send a positive tmin only from an -I meter's point (rc_leave_org).
+  ray.free_origin = r.org.w > 0 && !primary;
+  ray.tmax = std::isfinite(r.dir.w) ? r.dir.w : 1e300;
+  return ray;
+}
 
 rc_hit Renderer::Impl::to_device(const geometry::Ray& ray,
                                  const std::optional<geometry::Hit>& h) const {
@@ -31,8 +43,24 @@ rc_hit Renderer::Impl::to_device(const geometry::Ray& ray,
   return out;
 }
 
+// RADCL_PROFILE=raw: the chunk's rays as trace() hands them to the query, through Embree's
+// float traversal alone, timed apart from every phase.
+void Renderer::Impl::trace_raw(std::span<const rc_ray> queue, bool primaries) {
+  std::vector<geometry::Ray> rays(queue.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, queue.size(), 256), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
+      rays[i] = query_ray(queue[i], primaries);
+  });
+  std::vector<float> t(rays.size());
+  const auto t0 = std::chrono::steady_clock::now();
+  geom.intersect_raw(rays, t);
+  prof.add_raw(rays.size(),
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
 void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
                            std::span<PrimaryResult> res, bool primaries) {
+  if (prof.raw()) trace_raw(queue, primaries);
   Timed timed(prof, Phase::Trace);
   std::size_t n = queue.size();
   // One pass per ray: the query, then its device record. Embree's double answer is kept
@@ -50,13 +78,7 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kept.size()), [&](const auto& ranges) {
     for (std::size_t i = ranges.begin() * kRange; i < std::min(n, ranges.end() * kRange); ++i) {
       const rc_ray& r = queue[i];
-      geometry::Ray ray;
-      ray.org = {r.org.x + centre[0], r.org.y + centre[1], r.org.z + centre[2]};
-      ray.dir = {r.dir.x, r.dir.y, r.dir.z};
-      ray.tmin = r.org.w;
-      // The kernels send a positive tmin only from an -I meter's point (rc_leave_org).
-      ray.free_origin = r.org.w > 0 && !primaries;
-      ray.tmax = std::isfinite(r.dir.w) ? r.dir.w : 1e300;
+      const geometry::Ray ray = query_ray(r, primaries);
       std::optional<geometry::Hit> h =
           geom.intersect(ray.org, ray.dir, ray.tmin, ray.tmax, ray.free_origin);
       hits[i] = to_device(ray, h);

@@ -133,6 +133,9 @@ struct Renderer::Impl {
              bool primaries);
   // The device record of a geometry answer; a miss may still hit a distant source.
   rc_hit to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h) const;
+  // A queued ray as the geometry's query takes it (world origin, tmin, tmax, meter origin).
+  geometry::Ray query_ray(const rc_ray& r, bool primary) const;
+  void trace_raw(std::span<const rc_ray> queue, bool primaries); // RADCL_PROFILE=raw
   // Embree's answers for a chunk (where they are read), kept from chunk to chunk.
   std::vector<std::optional<geometry::Hit>> trace_answers;
   std::vector<std::uint8_t> trace_kept; // which 256-ray ranges of a traced chunk hold kept rays

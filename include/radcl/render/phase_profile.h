@@ -45,6 +45,7 @@ public:
       : on_(std::getenv("RADCL_PROFILE") != nullptr), t0_(std::chrono::steady_clock::now()) {
     const char* p = std::getenv("RADCL_PROFILE");
     waves_ = p && std::string(p) == "waves";
+    raw_ = p && std::string(p) == "raw";
   }
   bool on() const { return on_; }
   // RADCL_PROFILE=waves: the shading kernel is waited for on its own, and its time and that of
@@ -58,6 +59,14 @@ public:
     wave_rays_[b] += rays;
     wave_kernel_[b] += kernel;
     wave_reads_[b] += reads;
+  }
+  // RADCL_PROFILE=raw: every traced chunk's rays also go through Embree's float traversal
+  // alone (SceneGeometry::intersect_raw), untimed by the phases: how far the trace phase is from
+  // the machine's limit on the very same rays (best read with RADCL_NO_OVERLAP=1).
+  bool raw() const { return raw_; }
+  void add_raw(std::size_t rays, double seconds) {
+    raw_rays_ += rays;
+    raw_sec_ += seconds;
   }
   // RADCL_PROFILE=waves: the host's steps of shading a slice (kStep names), summed.
   enum Step { StepUpload, StepKernel, StepCounts, StepOffsets, StepPack, StepChildren, kSteps };
@@ -96,6 +105,15 @@ public:
     std::fprintf(f, "profile: %-12s %9.3f s %14s cpu %8.3f s (%.2f cores)\n", "lifetime", life, "",
                  cpu, life > 0 ? cpu / life : 0.0);
     std::fprintf(f, "profile: %-12s %9.3f s\n", "untimed", life - timed);
+    if (raw_ && raw_sec_ > 0) {
+      const double trace = sec_[static_cast<int>(Phase::Trace)];
+      const double rays = static_cast<double>(raw_rays_);
+      std::fprintf(f,
+                   "profile: raw embree  %9.3f s for the %llu traced rays (%.1f M/s); the trace "
+                   "phase %.1f M/s, %.2f of it\n",
+                   raw_sec_, static_cast<unsigned long long>(raw_rays_), rays / raw_sec_ / 1e6,
+                   trace > 0 ? rays / trace / 1e6 : 0.0, trace > 0 ? raw_sec_ / trace : 0.0);
+    }
     static const char* steps[] = {"upload", "kernel", "counts", "offsets", "pack", "children"};
     static_assert(std::size(steps) == kSteps);
     if (waves_)
@@ -147,7 +165,9 @@ public:
 
 private:
   static constexpr std::array<std::size_t, 5> kWaveBins{64, 256, 1024, 8192, 65536};
-  bool on_, waves_ = false;
+  bool on_, waves_ = false, raw_ = false;
+  std::uint64_t raw_rays_ = 0;
+  double raw_sec_ = 0;
   std::array<std::uint64_t, 6> wave_n_{}, wave_rays_{};
   std::array<double, 6> wave_kernel_{}, wave_reads_{};
   std::array<double, kSteps> step_{};
