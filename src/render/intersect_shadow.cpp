@@ -93,6 +93,7 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     });
     stats.shadow += m;
     timed.start(Phase::ShadowStep);
+    PhaseProfile::StepClock clock(prof);
 
     // The step works on the requests in place: only the hits, the slots and the states cross.
     device::Buffer& bslot = scratch(kStepSlots, slot);
@@ -120,7 +121,9 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     if (views_along)
       next =
           static_cast<const ShadowView*>(bnext.peek_later(m * sizeof(ShadowView), peek_view_step));
+    clock.mark(PhaseProfile::StepShadowSend);
     ctx.finish();
+    clock.mark(PhaseProfile::StepShadowWait);
     done = static_cast<bool>(after_step);
 
     std::size_t k = 0;
@@ -131,6 +134,7 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
       else if (status == 2u) // goes on
         ++k;
     }
+    clock.mark(PhaseProfile::StepShadowHost);
     if (k == 0) break;
     // The few that go on (through glass): their new origins and directions.
     if (!next)

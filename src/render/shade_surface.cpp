@@ -296,7 +296,9 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     reshade(rays, hit, over, nsp, shadow_off, spawn_off, bsh, children, into, first_child);
     if (!into) mirror.upload(children, first_child, nspawn);
   }
-  if (from_mirror && tree)
+  // The tally's own pass over the children sets their tally below, where it runs.
+  const bool tally_slice = tree && !throwaway && settings.trace == RenderSettings::Trace::Off;
+  if (from_mirror && tree && !tally_slice)
     for_rows(n, [&](std::size_t i) {
       for (std::uint32_t k = 0; k < nsp[i]; ++k)
         children[spawn_off[i] + k].tally = rays[i].tally;
@@ -334,12 +336,20 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   const bool summed = trace_shadows(
       bsh, nshadow, blocked, view, along ? std::function<void()>(sum_up) : std::function<void()>{});
   timed.start(Phase::Accumulate);
+  PhaseProfile::StepClock clock(prof);
   shadows.resize(traced_shadows ? nshadow : 0);
   if (!shadows.empty()) bsh.read_later(shadows.data(), shadows.size() * sizeof(rc_shadow));
   if (!summed) sum_up();
   if (!summed || !shadows.empty()) ctx.finish();
+  clock.mark(PhaseProfile::StepSumsWait);
+  // The rest of this function feeds the sums or the tally (the clock's last part).
+  struct MarkAtEnd {
+    PhaseProfile::StepClock& c;
+    ~MarkAtEnd() { c.mark(PhaseProfile::StepSumsTally); }
+  } mark_at_end{clock};
   if (tree && settings.trace == RenderSettings::Trace::Off) {
-    tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(), n);
+    tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(), n,
+                       from_mirror);
     set_misses_aside(next, first_child);
     return;
   }

@@ -156,10 +156,14 @@ void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& to
 
 void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
                              rc_ray* children, const std::uint32_t* off, const std::uint32_t* count,
-                             std::size_t n) {
+                             std::size_t n, bool parent_tally) {
   if (trace_) {
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n; ++i) {
+      if (parent_tally)
+        for (std::uint32_t k = 0; k < count[i]; ++k)
+          children[off[i] + k].tally = rays[i].tally;
       shaded(rays[i], hits[i], totals[i], children + off[i], count[i]);
+    }
     return;
   }
   new_nodes_.resize(n);
@@ -176,6 +180,7 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
       for (std::size_t k = 0; k < count[i];) {
         const std::size_t m = run_length(children + off[i], k, count[i]);
         if (m == 0) {
+          if (parent_tally) children[off[i] + k].tally = rays[i].tally; // a hemisphere's: below
           ++plain;
           ++k;
         } else {
@@ -203,6 +208,8 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
   hemis_.resize(hemis_.size() + th);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      // Rays without a hemisphere (most, deeper down) need not be read again.
+      if ((i + 1 < n ? new_hemis_[i + 1] : th) == new_hemis_[i]) continue;
       std::uint32_t node = node0 + new_nodes_[i], hemi = hemi0 + new_hemis_[i];
       rc_ray* ch = children + off[i];
       for (std::size_t k = 0; k < count[i];) {
@@ -284,15 +291,18 @@ void TallyTree::supersampled(const SuperRequest& r, rc_ray* children, std::size_
 
 // Radiance's ambsupersamp: the budget spread over the divisions in proportion to the
 // differences of each division's brightness from its neighbours (getambdiffs).
-std::vector<std::uint32_t> TallyTree::allocate(const Hemi& h) const {
+// Every hemisphere passes here as it resolves (millions in a run without the cache), so the
+// working arrays are the thread's own, reused rather than allocated each time.
+bool TallyTree::allocate(const Hemi& h, std::vector<std::uint32_t>& counts) const {
   const std::uint32_t ns = h.ns;
-  std::vector<std::uint32_t> counts(std::size_t{ns} * ns, 0);
+  counts.assign(std::size_t{ns} * ns, 0);
   double ab = bright(h.acoef);
-  if (ab <= 0 || ns < 2) return counts;
+  if (h.budget == 0 || ab <= 0 || ns < 2) return false; // no samples to spread, or no spread
   const double normf = 1.0 / ab;
   // Each division's value as Radiance holds it: without the shaded ray's own coefficient.
   const float pc[3] = {h.ray.coef.x, h.ray.coef.y, h.ray.coef.z};
-  std::vector<double> b(counts.size());
+  thread_local std::vector<double> b, e;
+  b.resize(counts.size());
   for (std::size_t c = 0; c < b.size(); ++c) {
     const Node& n = nodes_[h.first_cell + c];
     Vec3d v;
@@ -300,7 +310,7 @@ std::vector<std::uint32_t> TallyTree::allocate(const Hemi& h) const {
       v[i] = pc[i] > 0 ? n.sum[i] / n.count / pc[i] : 0.0;
     b[c] = bright(v);
   }
-  std::vector<double> e(b.size(), 0.0);
+  e.assign(b.size(), 0.0);
   // Two neighbouring black divisions: Radiance's estimate divides 0 by 0 there, and the NaN
   // that spreads through its sum stops all super-sampling of the hemisphere. radcl does the
   // same on purpose: which divisions get more samples depends on the first samples' values,
@@ -325,7 +335,7 @@ std::vector<std::uint32_t> TallyTree::allocate(const Hemi& h) const {
       if (j) diff(a, a - 1);
       if (i && j) diff(a, a - ns - 1);
     }
-  if (black_pair) return counts;
+  if (black_pair) return false;
   // Corners and edges have fewer neighbours.
   auto scale = [&](std::size_t a, double f) { e[a] *= f; };
   scale(0, 8. / 3.);
@@ -343,6 +353,7 @@ std::vector<std::uint32_t> TallyTree::allocate(const Hemi& h) const {
     rem += e[c];
   std::int64_t cnt = h.budget;
   rc_rng_key key = rc_make_key(h.ray.primary, h.ray.sample ^ 0xA11C0CA7u, h.ray.depth, seed_);
+  bool any = false;
   for (std::size_t c = 0; c < e.size(); ++c) {
     if (rem <= kFtiny) break;
     double u = rc_random(key, h.which * 65536u + static_cast<std::uint32_t>(c));
@@ -350,12 +361,13 @@ std::vector<std::uint32_t> TallyTree::allocate(const Hemi& h) const {
     if (nss > 0) {
       std::int64_t take = std::min(nss, cnt);
       counts[c] = static_cast<std::uint32_t>(take);
+      any = any || take > 0;
       cnt -= take;
       if (cnt == 0) break;
     }
     rem -= e[c];
   }
-  return counts;
+  return any;
 }
 
 void TallyTree::settle(std::uint32_t id, std::vector<SuperRequest>& requests) {
@@ -380,13 +392,10 @@ void TallyTree::settle(std::uint32_t id, std::vector<SuperRequest>& requests) {
     Hemi& h = hemis_[n.hemi];
     if (!h.second) {
       h.second = true;
-      std::vector<std::uint32_t> counts = allocate(h);
-      bool any = false;
-      for (std::uint32_t c : counts)
-        any = any || c > 0;
-      if (any) {
+      thread_local std::vector<std::uint32_t> counts;
+      if (allocate(h, counts)) {
         nodes_[id].pending = 1;
-        requests.push_back(SuperRequest{n.hemi, h.ray, h.hit, h.which, std::move(counts)});
+        requests.push_back(SuperRequest{n.hemi, h.ray, h.hit, h.which, counts});
         return;
       }
     }

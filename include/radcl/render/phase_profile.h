@@ -69,8 +69,40 @@ public:
     raw_sec_ += seconds;
   }
   // RADCL_PROFILE=waves: the host's steps of shading a slice (kStep names), summed.
-  enum Step { StepUpload, StepKernel, StepCounts, StepOffsets, StepPack, StepChildren, kSteps };
+  // The shadow steps' and the sums' parts are timed at their own waits (none added).
+  enum Step {
+    StepUpload,
+    StepKernel,
+    StepCounts,
+    StepOffsets,
+    StepPack,
+    StepChildren,
+    StepShadowSend, // a shadow step's hits, slots and states sent, its kernel enqueued
+    StepShadowWait, // its wait for the device
+    StepShadowHost, // the host's pass over its states (reached, blocked, going on)
+    StepSumsWait,   // the sums' wait (rc_accumulate and the totals read back)
+    StepSumsTally,  // the -as tally tree fed with the slice (or the plain sums)
+    kSteps
+  };
   void add_step(Step s, double seconds) { step_[s] += seconds; }
+  // Times consecutive parts of one piece of work under RADCL_PROFILE=waves: each mark() adds
+  // the time since the last to its step.
+  class StepClock {
+  public:
+    explicit StepClock(PhaseProfile& p) : p_(p.waves_ ? &p : nullptr) {
+      if (p_) at_ = std::chrono::steady_clock::now();
+    }
+    void mark(Step s) {
+      if (!p_) return;
+      const auto now = std::chrono::steady_clock::now();
+      p_->add_step(s, std::chrono::duration<double>(now - at_).count());
+      at_ = now;
+    }
+
+  private:
+    PhaseProfile* p_;
+    std::chrono::steady_clock::time_point at_{};
+  };
   // The process's CPU time so far, every thread's.
   static double cpu_now() {
     timespec ts{};
@@ -114,11 +146,14 @@ public:
                    raw_sec_, static_cast<unsigned long long>(raw_rays_), rays / raw_sec_ / 1e6,
                    trace > 0 ? rays / trace / 1e6 : 0.0, trace > 0 ? raw_sec_ / trace : 0.0);
     }
-    static const char* steps[] = {"upload", "kernel", "counts", "offsets", "pack", "children"};
+    static const char* steps[] = {"shade step upload",  "shade step kernel", "shade step counts",
+                                  "shade step offsets", "shade step pack",   "shade step children",
+                                  "shadow step send",   "shadow step wait",  "shadow step host",
+                                  "accum wait",         "accum tally"};
     static_assert(std::size(steps) == kSteps);
     if (waves_)
       for (int i = 0; i < kSteps; ++i)
-        std::fprintf(f, "profile: shade step %-10s %9.3f s\n", steps[i], step_[i]);
+        std::fprintf(f, "profile: %-20s %9.3f s\n", steps[i], step_[i]);
     for (std::size_t b = 0; b < wave_n_.size(); ++b)
       if (wave_n_[b])
         std::fprintf(

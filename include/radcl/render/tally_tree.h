@@ -63,10 +63,12 @@ public:
   // The same for rays [0, n) of a slice, in order, outside trace mode: ray i's children are
   // children[off[i], off[i] + count[i]). The hemispheres' nodes are made on every core (their
   // places follow from counts, so they are those the serial order gives); sums and settling
-  // stay in ray order.
+  // stay in ray order. `parent_tally`: the children's tally fields are stale (the device's
+  // copy of the rays made them) and are set from their parents' on the way, as the kernel
+  // would have: one pass over the children rather than two.
   void shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
                     rc_ray* children, const std::uint32_t* off, const std::uint32_t* count,
-                    std::size_t n);
+                    std::size_t n, bool parent_tally = false);
 
   // Super-sample children of request `r` (their cell field names the division).
   void supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren);
@@ -117,7 +119,8 @@ private:
   std::uint32_t ray_node(std::uint32_t parent, std::uint32_t rec);
   // Settles `node` up its tree; super-sample requests it makes go to `requests`.
   void settle(std::uint32_t node, std::vector<SuperRequest>& requests);
-  std::vector<std::uint32_t> allocate(const Hemi& h) const;
+  // Radiance's super-sample counts of each division into `counts` (ns * ns); whether any.
+  bool allocate(const Hemi& h, std::vector<std::uint32_t>& counts) const;
 
   std::vector<Node, NoInit<Node>> nodes_;
   std::vector<Hemi, NoInit<Hemi>> hemis_;
