@@ -93,7 +93,7 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                      (a[2] - b[2]) * (a[2] - b[2]));
   };
-  // In queue order, as before: a primary's straight continuation adds up along it.
+  // In queue order: a primary's straight continuation adds up along it.
   for (std::size_t b = 0; b < kept.size(); ++b) {
     if (!kept[b]) continue;
     for (std::size_t i = b * kRange; i < std::min(n, (b + 1) * kRange); ++i) {

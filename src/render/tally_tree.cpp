@@ -295,9 +295,9 @@ void TallyTree::supersampled(const SuperRequest& r, rc_ray* children, std::size_
 // working arrays are the thread's own, reused rather than allocated each time.
 bool TallyTree::allocate(const Hemi& h, std::vector<std::uint32_t>& counts) const {
   const std::uint32_t ns = h.ns;
-  counts.assign(std::size_t{ns} * ns, 0);
   double ab = bright(h.acoef);
   if (h.budget == 0 || ab <= 0 || ns < 2) return false; // no samples to spread, or no spread
+  counts.assign(std::size_t{ns} * ns, 0);
   const double normf = 1.0 / ab;
   // Each division's value as Radiance holds it: without the shaded ray's own coefficient.
   const float pc[3] = {h.ray.coef.x, h.ray.coef.y, h.ray.coef.z};

@@ -119,7 +119,8 @@ private:
   std::uint32_t ray_node(std::uint32_t parent, std::uint32_t rec);
   // Settles `node` up its tree; super-sample requests it makes go to `requests`.
   void settle(std::uint32_t node, std::vector<SuperRequest>& requests);
-  // Radiance's super-sample counts of each division into `counts` (ns * ns); whether any.
+  // Radiance's super-sample counts of each division into `counts` (ns * ns); whether any
+  // (`counts` is left as it was when none).
   bool allocate(const Hemi& h, std::vector<std::uint32_t>& counts) const;
 
   std::vector<Node, NoInit<Node>> nodes_;
