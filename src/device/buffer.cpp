@@ -41,9 +41,28 @@ Buffer::Buffer(Context& ctx, std::size_t bytes) : ctx_(&ctx), bytes_(bytes) {
   }
 }
 
+Buffer Buffer::view(Context& ctx, const void* p, std::size_t bytes) {
+  Buffer b;
+  std::size_t at = 0;
+  cl_mem parent = bytes ? ctx.shared_region(p, bytes, &at) : nullptr;
+  if (!parent) return b;
+  const cl_buffer_region region{at, bytes};
+  cl_int st = CL_SUCCESS;
+  cl_mem m =
+      clCreateSubBuffer(parent, CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region, &st);
+  if (st != CL_SUCCESS || !m) return b;
+  b.ctx_ = &ctx;
+  b.mem_ = m;
+  b.host_ = const_cast<void*>(p);
+  b.bytes_ = bytes;
+  b.owns_host_ = false;
+  return b;
+}
+
 void Buffer::release() {
   if (mem_) clReleaseMemObject(mem_);
-  std::free(host_);
+  if (owns_host_) std::free(host_);
+  owns_host_ = true;
   mem_ = nullptr;
   host_ = nullptr;
 }
@@ -54,7 +73,7 @@ Buffer::~Buffer() {
 
 Buffer::Buffer(Buffer&& o) noexcept
     : ctx_(o.ctx_), mem_(std::exchange(o.mem_, nullptr)), host_(std::exchange(o.host_, nullptr)),
-      bytes_(std::exchange(o.bytes_, 0)) {}
+      bytes_(std::exchange(o.bytes_, 0)), owns_host_(std::exchange(o.owns_host_, true)) {}
 
 Buffer& Buffer::operator=(Buffer&& o) noexcept {
   if (this != &o) {
@@ -63,6 +82,7 @@ Buffer& Buffer::operator=(Buffer&& o) noexcept {
     mem_ = std::exchange(o.mem_, nullptr);
     host_ = std::exchange(o.host_, nullptr);
     bytes_ = std::exchange(o.bytes_, 0);
+    owns_host_ = std::exchange(o.owns_host_, true);
   }
   return *this;
 }

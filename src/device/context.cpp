@@ -32,6 +32,12 @@ Context::Context(const DeviceInfo& device) : info_(device) {
   }
   const char* pin = std::getenv("RADCL_PINNED");
   use_pinned_ = !zero_copy() && !(pin && std::string(pin) == "0");
+  share_ = zero_copy() && !(pin && std::string(pin) == "0");
+  cl_uint bits = 0;
+  if (clGetDeviceInfo(id, CL_DEVICE_MEM_BASE_ADDR_ALIGN, sizeof bits, &bits, nullptr) ==
+          CL_SUCCESS &&
+      bits >= 8)
+    sub_align_ = bits / 8;
 }
 
 Context::~Context() {
@@ -86,6 +92,19 @@ void* Context::pinned(std::size_t bytes) {
 }
 
 void* Context::alloc_pinned(std::size_t bytes) {
+  if (share_ && bytes > 0) {
+    constexpr std::size_t kPage = 4096; // page alignment lets PoCL use the memory directly
+    void* h = std::aligned_alloc(kPage, (bytes + kPage - 1) / kPage * kPage);
+    if (!h) return nullptr;
+    cl_int st = CL_SUCCESS;
+    cl_mem m = clCreateBuffer(context_, CL_MEM_READ_WRITE | CL_MEM_USE_HOST_PTR, bytes, h, &st);
+    if (st != CL_SUCCESS) {
+      std::free(h);
+      return nullptr;
+    }
+    owned_.push_back({m, static_cast<char*>(h), bytes, bytes, true});
+    return h;
+  }
   if (!use_pinned_ || bytes == 0) return nullptr;
   cl_int st = CL_SUCCESS;
   cl_mem m =
@@ -106,10 +125,15 @@ bool Context::free_pinned(void* p) {
   for (std::size_t k = 0; k < owned_.size(); ++k)
     if (owned_[k].host == p) {
       cl_mem m = static_cast<cl_mem>(owned_[k].mem);
-      clFinish(queue_); // no transfer may still read it
-      clEnqueueUnmapMemObject(queue_, m, p, 0, nullptr, nullptr);
-      clFinish(queue_);
-      clReleaseMemObject(m);
+      clFinish(queue_); // no transfer or kernel may still read it
+      if (owned_[k].shared) {
+        clReleaseMemObject(m);
+        std::free(p);
+      } else {
+        clEnqueueUnmapMemObject(queue_, m, p, 0, nullptr, nullptr);
+        clFinish(queue_);
+        clReleaseMemObject(m);
+      }
       owned_.erase(owned_.begin() + static_cast<std::ptrdiff_t>(k));
       return true;
     }
@@ -121,6 +145,18 @@ bool Context::is_pinned(const void* p, std::size_t bytes) const {
   for (const PinnedBlock& b : owned_)
     if (c >= b.host && c + bytes <= b.host + b.size) return true;
   return false;
+}
+
+_cl_mem* Context::shared_region(const void* p, std::size_t bytes, std::size_t* offset) const {
+  const char* c = static_cast<const char*>(p);
+  for (const PinnedBlock& b : owned_)
+    if (b.shared && c >= b.host && c + bytes <= b.host + b.size) {
+      const auto at = static_cast<std::size_t>(c - b.host);
+      if (at % sub_align_ != 0) return nullptr;
+      *offset = at;
+      return static_cast<cl_mem>(b.mem);
+    }
+  return nullptr;
 }
 
 void Context::copy_when_drained(const void* from, void* to, std::size_t bytes) {

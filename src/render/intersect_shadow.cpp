@@ -97,8 +97,9 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
 
     // The step works on the requests in place: only the hits, the slots and the states cross.
     device::Buffer& bslot = scratch(kStepSlots, slot);
-    device::Buffer& bhits = scratch(kStepHits, m * sizeof(rc_hit));
-    write_rows(bhits, hits.data(), m * sizeof(rc_hit));
+    device::Buffer hit_view = device::Buffer::view(ctx, hits.data(), m * sizeof(rc_hit));
+    device::Buffer& bhits = hit_view.handle() ? hit_view : scratch(kStepHits, m * sizeof(rc_hit));
+    if (!hit_view.handle()) write_rows(bhits, hits.data(), m * sizeof(rc_hit));
     device::Buffer& bstate = scratch(kStepState, state);
     device::Buffer& bnext = scratch(kStepView, m * sizeof(ShadowView));
     std::uint32_t um = static_cast<std::uint32_t>(m);

@@ -75,7 +75,7 @@ struct Renderer::Impl {
   // ---- The driver (wave_loop.cpp) ----
   // Per-wave device buffers and host queues, kept between waves and batches.
   ScratchPool scratch{ctx};
-  std::vector<HostQueue<rc_ray>> spare_rays;
+  std::vector<RayQueue> spare_rays;
   std::vector<HitQueue> spare_hits;
   // The current generation's rays on the device (GPU); gen_queue is its host copy, whose rows
   // shade_slice names by address.
@@ -104,13 +104,13 @@ struct Renderer::Impl {
                     std::size_t first_index);
   // A wave's children join the next wave; while the cache is built, its record requests (they
   // are not rays) go to `misses` instead, in the same order.
-  void append_children(const std::vector<rc_ray>& children, HostQueue<rc_ray>& next);
+  void append_children(const std::vector<rc_ray>& children, RayQueue& next);
   // The same for children already written to next[first...]: the record requests among them
   // move to `misses`, the rest close up in order.
-  void set_misses_aside(HostQueue<rc_ray>& next, std::size_t first);
+  void set_misses_aside(RayQueue& next, std::size_t first);
   // The second pass of -as: the hemispheres' rays are shaded again and write only the
   // super-samples the tally tree asked for.
-  void supersample(const std::vector<TallyTree::SuperRequest>& req, HostQueue<rc_ray>& next);
+  void supersample(const std::vector<TallyTree::SuperRequest>& req, RayQueue& next);
 
   // The current batch. A primary's result slot: ids are input indices unless the caller gave
   // its own (then they are looked up).
@@ -201,7 +201,7 @@ struct Renderer::Impl {
   // One pass writes every ray's records into fixed slots; rays that did not fit are shaded
   // again into exactly sized room. The records are packed in ray order either way.
   void shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n, std::vector<Vec3d>& sums,
-                   HostQueue<rc_ray>& next);
+                   RayQueue& next);
   // Shades the rays `over` (slice indices) again, their records written into exact room, and
   // puts them in their places in the slice's packed records.
   void reshade(const rc_ray* rays, const rc_hit* hit, const std::vector<std::uint32_t>& over,

@@ -73,27 +73,32 @@ private:
 template <class T> using HostQueue = std::vector<T, NoInit<T>>;
 
 // The same, in the device's pinned host memory where it has some (Context::alloc_pinned): a
-// chunk's hits, which Embree writes and the device reads, then cross without a copy.
-template <class T> struct PinnedAlloc : NoInit<T> {
-  template <class U> struct rebind { using other = PinnedAlloc<U>; };
+// chunk's hits, which Embree writes and the device reads, then cross without a copy (on a
+// device sharing the host's memory the kernels read them in place). With kSharedOnly, only on
+// such a device: a generation's rays, read in place there, stay pageable for a GPU.
+template <class T, bool kSharedOnly = false> struct PinnedAlloc : NoInit<T> {
+  template <class U> struct rebind { using other = PinnedAlloc<U, kSharedOnly>; };
   using propagate_on_container_move_assignment = std::true_type;
   using propagate_on_container_swap = std::true_type;
   using is_always_equal = std::false_type;
   device::Context* ctx = nullptr;
   PinnedAlloc() = default;
   explicit PinnedAlloc(device::Context* c) : ctx(c) {}
-  template <class U> PinnedAlloc(const PinnedAlloc<U>& o) noexcept : ctx(o.ctx) {}
+  template <class U> PinnedAlloc(const PinnedAlloc<U, kSharedOnly>& o) noexcept : ctx(o.ctx) {}
   T* allocate(std::size_t n) {
-    if (ctx)
+    if (ctx && (!kSharedOnly || ctx->zero_copy()))
       if (void* p = ctx->alloc_pinned(n * sizeof(T))) return static_cast<T*>(p);
     return std::allocator<T>().allocate(n);
   }
   void deallocate(T* p, std::size_t n) {
     if (!(ctx && ctx->free_pinned(p))) std::allocator<T>().deallocate(p, n);
   }
-  template <class U> bool operator==(const PinnedAlloc<U>& o) const { return ctx == o.ctx; }
+  template <class U> bool operator==(const PinnedAlloc<U, kSharedOnly>& o) const {
+    return ctx == o.ctx;
+  }
 };
 using HitQueue = std::vector<rc_hit, PinnedAlloc<rc_hit>>;
+using RayQueue = std::vector<rc_ray, PinnedAlloc<rc_ray, true>>;
 
 // A vector lent from `pool` for a scope and given back, emptied but with its room, when the
 // scope ends (a batch inside another, as a record's hemisphere inside a cache pass, takes

@@ -147,7 +147,7 @@ void Renderer::Impl::run_pack(device::Buffer& slot_sh, device::Buffer& slot_sp,
 }
 
 void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n,
-                                 std::vector<Vec3d>& sums, HostQueue<rc_ray>& next) {
+                                 std::vector<Vec3d>& sums, RayQueue& next) {
   Timed timed(prof, Phase::Shade);
   std::uint32_t un = static_cast<std::uint32_t>(n);
   // RADCL_PROFILE=waves: each step waited for and timed on its own.
@@ -167,9 +167,15 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
       mirror.current() && rays >= gen_queue.data() &&
       rays + n <= gen_queue.data() + gen_queue.size() &&
       mirror.copy_current(brays, static_cast<std::size_t>(rays - gen_queue.data()), n);
-  if (!from_mirror) write_rows(brays, rays, n * sizeof(rc_ray));
-  device::Buffer& bhits = scratch(kHits, n * sizeof(rc_hit));
-  write_rows(bhits, hit, n * sizeof(rc_hit));
+  // Where the device shares the host's memory, the kernel reads the queues in place.
+  device::Buffer ray_view, hit_view;
+  if (!from_mirror) {
+    ray_view = device::Buffer::view(ctx, rays, n * sizeof(rc_ray));
+    if (!ray_view.handle()) write_rows(brays, rays, n * sizeof(rc_ray));
+  }
+  hit_view = device::Buffer::view(ctx, hit, n * sizeof(rc_hit));
+  device::Buffer& bhits = hit_view.handle() ? hit_view : scratch(kHits, n * sizeof(rc_hit));
+  if (!hit_view.handle()) write_rows(bhits, hit, n * sizeof(rc_hit));
   step(PhaseProfile::StepUpload);
   const std::uint32_t csh = cap_shadow, csp = cap_spawn;
   device::Buffer& bslot_sh = scratch(kShadowSlots, n * csh * sizeof(rc_shadow));
@@ -177,7 +183,13 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   device::Buffer& bimm = scratch(kImm, n * sizeof(rc_float4));
   device::Buffer& bnshadow = scratch(kNShadow, n * 4);
   device::Buffer& bnspawn = scratch(kNSpawn, n * 4);
-  ShadeLaunch l{&brays, &bhits, &bnshadow, &bnspawn, &bslot_sh, &bslot_sp, &bimm};
+  ShadeLaunch l{ray_view.handle() ? &ray_view : &brays,
+                &bhits,
+                &bnshadow,
+                &bnspawn,
+                &bslot_sh,
+                &bslot_sp,
+                &bimm};
   l.cap_shadow = csh;
   l.cap_spawn = csp;
   const auto w0 = std::chrono::steady_clock::now();

@@ -65,13 +65,14 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   }
   // The generation queues come from a pool that outlives the batch: growing fresh ones to
   // millions of rays in every batch paged in (and cleared) new memory each time.
-  Spare<HostQueue<rc_ray>> queue_hold(spare_rays), next_hold(spare_rays);
+  Spare<RayQueue> queue_hold(spare_rays, RayQueue(PinnedAlloc<rc_ray, true>(&ctx))),
+      next_hold(spare_rays, RayQueue(PinnedAlloc<rc_ray, true>(&ctx)));
   Spare<HitQueue> hits_hold(spare_hits, HitQueue(PinnedAlloc<rc_hit>(&ctx)));
-  HostQueue<rc_ray>& queue = queue_hold.v;
+  RayQueue& queue = queue_hold.v;
   HitQueue& hits = hits_hold.v;
   // Room for a whole generation up front (address space only until used): growing by doubling
   // paged in and copied 390 MB in 2,000 sensors' run on 2 cores, a tenth of its CPU time.
-  for (HostQueue<rc_ray>* v : {&queue, &next_hold.v})
+  for (RayQueue* v : {&queue, &next_hold.v})
     if (v->capacity() < 2 * generation_rays()) v->reserve(2 * generation_rays());
   queue.assign(prim.size(), rc_ray{}); // fields a primary does not set stay 0
   leak_lists.assign(1, 0u);
@@ -150,7 +151,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   // chunk's hits and its primaries' geometric results, which shading never reads, and every
   // device command stays on this thread.
   bool first_wave = true;
-  HostQueue<rc_ray>& next = next_hold.v;
+  RayQueue& next = next_hold.v;
   Spare<HitQueue> ahead_hold(spare_hits, HitQueue(PinnedAlloc<rc_hit>(&ctx)));
   HitQueue& ahead = ahead_hold.v;
   const std::size_t chunk = chunk_rays();
@@ -187,7 +188,10 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
       size_slots(part, hits);
       for (std::size_t sa = 0; sa < part.size();) {
         std::size_t per_ray = cap_shadow * sizeof(rc_shadow) + cap_spawn * sizeof(rc_ray);
-        std::size_t sb = std::min(part.size(), sa + std::max<std::size_t>(256, limit / per_ray));
+        // Slices start at multiples of 256 rays: there the kernels may read a queue in place
+        // (a sub-buffer's start is aligned).
+        std::size_t sb =
+            std::min(part.size(), sa + std::max<std::size_t>(256, limit / per_ray / 256 * 256));
         shade_slice(part.data() + sa, hits.data() + sa, sb - sa, sums, next);
         sa = sb;
       }
@@ -219,8 +223,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   }
 }
 
-void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req,
-                                 HostQueue<rc_ray>& next) {
+void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req, RayQueue& next) {
   Timed timed(prof, Phase::Super);
   std::size_t n = req.size();
   std::vector<rc_ray> rays(n);
@@ -262,7 +265,7 @@ void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req
   mirror.upload(next.data() + at, at, next.size() - at);
 }
 
-void Renderer::Impl::append_children(const std::vector<rc_ray>& children, HostQueue<rc_ray>& next) {
+void Renderer::Impl::append_children(const std::vector<rc_ray>& children, RayQueue& next) {
   if (!collecting) {
     next.insert(next.end(), children.begin(), children.end());
     return;
@@ -274,7 +277,7 @@ void Renderer::Impl::append_children(const std::vector<rc_ray>& children, HostQu
       next.push_back(r);
 }
 
-void Renderer::Impl::set_misses_aside(HostQueue<rc_ray>& next, std::size_t first) {
+void Renderer::Impl::set_misses_aside(RayQueue& next, std::size_t first) {
   if (!collecting) return;
   std::size_t k = first;
   for (std::size_t i = first; i < next.size(); ++i) {

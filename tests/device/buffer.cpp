@@ -250,3 +250,41 @@ TEST(Buffer, CopiesOnTheDevice) {
     EXPECT_THROW(a.copy_from(b, 8, 0, n * 4 - 4), radcl::FatalError);
   }
 }
+
+// Where the device shares the host's memory, alloc_pinned gives a zero-copy buffer's own
+// allocation and a view of part of it is that memory in place: a kernel's output through the
+// view lands in the host's array, with nothing copied. Elsewhere, and for memory not from
+// alloc_pinned or at a start a sub-buffer may not have, there is no view (the caller copies).
+TEST(Buffer, ViewsOfSharedMemoryAreThatMemory) {
+  Context& ctx = test_context();
+  const std::uint32_t n = 4096, dims = 1, seed = 7;
+  std::vector<std::uint32_t> ordinary(n);
+  EXPECT_EQ(Buffer::view(ctx, ordinary.data(), n * 4).handle(), nullptr);
+  auto* p = static_cast<std::uint32_t*>(ctx.alloc_pinned(2 * n * 4));
+  if (!p) GTEST_SKIP() << "no pinned memory here (RADCL_PINNED=0)";
+  if (!ctx.zero_copy()) {
+    EXPECT_EQ(Buffer::view(ctx, p, n * 4).handle(), nullptr);
+    EXPECT_TRUE(ctx.free_pinned(p));
+    GTEST_SKIP() << ctx.info().name << " has its own memory";
+  }
+  EXPECT_EQ(Buffer::view(ctx, p + 1, n * 4).handle(), nullptr);     // not a sub-buffer's start
+  EXPECT_EQ(Buffer::view(ctx, p + n, n * 4 + 4).handle(), nullptr); // past its end
+  std::fill(p, p + 2 * n, 0xDEADBEEFu);
+  Program prog(ctx, ProgramSource{{"probe/rng.cl"}, "", "-cl-std=CL1.2"});
+  Kernel k = prog.kernel("rc_rng_fill");
+  Buffer u(ctx, n * 4), ref(ctx, n * 4);
+  {
+    Buffer v = Buffer::view(ctx, p + n, n * 4); // the second half, in place
+    ASSERT_NE(v.handle(), nullptr);
+    EXPECT_TRUE(v.zero_copy());
+    k.arg(0, v).arg(1, u).arg(2, n).arg(3, dims).arg(4, seed);
+    ctx.run(k, n);
+    ctx.finish();
+  }
+  k.arg(0, ref).arg(1, u).arg(2, n).arg(3, dims).arg(4, seed);
+  ctx.run(k, n);
+  const std::vector<std::uint32_t> want = ref.to_vector<std::uint32_t>(n);
+  EXPECT_EQ(std::vector<std::uint32_t>(p + n, p + 2 * n), want);
+  EXPECT_EQ(std::vector<std::uint32_t>(p, p + n), std::vector<std::uint32_t>(n, 0xDEADBEEFu));
+  EXPECT_TRUE(ctx.free_pinned(p)); // the view is gone; the memory was never its own
+}

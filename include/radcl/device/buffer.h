@@ -52,6 +52,11 @@ public:
   // directly it is an ordinary read.
   void read_later(void* dst, std::size_t bytes, std::size_t offset = 0) const;
 
+  // The kernels' view of [p, p + bytes) in place, where that lies in a zero-copy buffer of
+  // Context::alloc_pinned (a sub-buffer: nothing is copied); an empty buffer (no handle)
+  // elsewhere. The memory stays its allocator's.
+  static Buffer view(Context& ctx, const void* p, std::size_t bytes);
+
   template <class T> static Buffer from(Context& ctx, const std::vector<T>& v) {
     Buffer b(ctx, v.empty() ? sizeof(T) : v.size() * sizeof(T));
     if (!v.empty()) b.write(v.data(), v.size() * sizeof(T));
@@ -81,6 +86,7 @@ private:
   _cl_mem* mem_ = nullptr;
   void* host_ = nullptr;
   std::size_t bytes_ = 0;
+  bool owns_host_ = true; // false for a view
   void release();
   const void* peek_into(std::size_t bytes, std::vector<char>& staging, bool later) const;
 };

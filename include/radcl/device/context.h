@@ -10,6 +10,7 @@
 
 struct _cl_context;
 struct _cl_command_queue;
+struct _cl_mem;
 
 namespace radcl::device {
 
@@ -50,13 +51,18 @@ public:
   void* pinned(std::size_t bytes);
   bool pins() const { return use_pinned_; }
   // Pinned host memory of the caller's own, held until free_pinned (or the context ends): a
-  // queue the host fills (Embree's hits) goes to the device from there without a copy.
-  // nullptr where there is none (zero-copy devices, RADCL_PINNED=0, the driver refused).
+  // queue the host fills (Embree's hits) goes to the device from there without a copy. Where
+  // the device shares the host's memory it is a zero-copy buffer's own allocation, which the
+  // kernels read in place (Buffer::view). nullptr where there is none (RADCL_PINNED=0, the
+  // driver refused).
   void* alloc_pinned(std::size_t bytes);
   // Gives back memory alloc_pinned gave; false (nothing done) for any other pointer.
   bool free_pinned(void* p);
   // Whether [p, p + bytes) lies in memory alloc_pinned gave.
   bool is_pinned(const void* p, std::size_t bytes) const;
+  // The zero-copy buffer alloc_pinned gave that holds [p, p + bytes), with p's offset in it;
+  // nullptr where none does or the offset is not one a sub-buffer may start at.
+  _cl_mem* shared_region(const void* p, std::size_t bytes, std::size_t* offset) const;
   // Copies `bytes` from `from` (pinned room a read is filling) to `to` once the queue drains.
   void copy_when_drained(const void* from, void* to, std::size_t bytes);
   // Every command enqueued so far has completed: reads into pinned room reach their
@@ -81,8 +87,11 @@ private:
     void* mem; // cl_mem
     char* host;
     std::size_t size, used;
+    bool shared = false; // a zero-copy buffer over an aligned host allocation
   };
   bool use_pinned_ = false;
+  bool share_ = false;           // alloc_pinned gives zero-copy buffers' memory
+  std::size_t sub_align_ = 4096; // where a sub-buffer may start (CL_DEVICE_MEM_BASE_ADDR_ALIGN)
   std::vector<PinnedBlock> pinned_, owned_;
   std::size_t pin_block_ = 0;
   struct CopyBack {
