@@ -28,6 +28,9 @@ typedef struct rc_u32x4 {
 #endif
 
 RC_RNG_PHILOX rc_u32x4 rc_philox4x32(rc_u32x4 c, rc_u32 k0, rc_u32 k1) {
+#ifdef __OPENCL_C_VERSION__
+#pragma unroll
+#endif
   for (int r = 0; r < 10; ++r) {
     rc_u64 p0 = (rc_u64)RC_PHILOX_M0 * (rc_u64)c.v[0];
     rc_u64 p1 = (rc_u64)RC_PHILOX_M1 * (rc_u64)c.v[2];
