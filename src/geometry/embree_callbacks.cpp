@@ -1,6 +1,7 @@
-// Embree callbacks. Queries go through rtcIntersect1/rtcOccluded1 only, so N is always 1 and
-// the context is always a RayContext. Distances are parametric along the caller's unit world
-// direction, which Embree's instance transforms preserve, so local and world t agree.
+// Embree callbacks. The context is a RayContext: a single query's (N is 1), or the head of a
+// packet's (N is the packet's size, lane k the packet's ray k: RayContext::lane). Distances are
+// parametric along the caller's unit world direction, which Embree's instance transforms
+// preserve, so local and world t agree.
 #include <cmath>
 #include <limits>
 
@@ -46,84 +47,94 @@ void user_bounds(const RTCBoundsFunctionArguments* args) {
 }
 
 void user_intersect(const RTCIntersectFunctionNArguments* args) {
-  if (args->valid[0] == 0) return;
-  auto* rc = reinterpret_cast<RayContext*>(args->context);
+  auto* head = reinterpret_cast<RayContext*>(args->context);
   const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
   const unsigned inst = args->context->instID[0];
-  const LocalRay lr = local_ray(*rc, inst);
+  const AnalyticSurface& s = proto->analytic[args->primID];
   RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
   RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
-  float& tfar = RTCRayN_tfar(ray, args->N, 0);
-  double t;
-  Vec3 n;
-  // Embree's tfar is the closest hit rounded to float; the exact one decides, ties included.
-  const double bound = std::min(rc->tmax, rc->best ? std::nextafter(rc->best_t, INFINITY)
-                                                   : static_cast<double>(tfar));
-  const AnalyticSurface& s = proto->analytic[args->primID];
-  if (!intersect_analytic(s, lr.o, lr.d, rc->tmin, bound, t, n, rc->on * lr.len)) return;
-  const std::uint64_t key = tie_key(inst, static_cast<std::uint32_t>(s.object));
-  if (rc->loses(t, key)) return;
-  rc->accept(t, key);
-  tfar = static_cast<float>(t);
-  RTCHitN_Ng_x(hit, args->N, 0) = static_cast<float>(n[0]);
-  RTCHitN_Ng_y(hit, args->N, 0) = static_cast<float>(n[1]);
-  RTCHitN_Ng_z(hit, args->N, 0) = static_cast<float>(n[2]);
-  RTCHitN_u(hit, args->N, 0) = 0;
-  RTCHitN_v(hit, args->N, 0) = 0;
-  RTCHitN_primID(hit, args->N, 0) = args->primID;
-  RTCHitN_geomID(hit, args->N, 0) = args->geomID;
-  RTCHitN_instID(hit, args->N, 0, 0) = inst;
-  rc->user_hit = true;
-  rc->inst = inst;
-  rc->geom = args->geomID;
-  rc->prim = args->primID;
-  rc->t = t;
-  rc->normal = n;
+  for (unsigned k = 0; k < args->N; ++k) {
+    if (args->valid[k] == 0) continue;
+    RayContext* rc = &head->lane(k);
+    const LocalRay lr = local_ray(*rc, inst);
+    float& tfar = RTCRayN_tfar(ray, args->N, k);
+    double t;
+    Vec3 n;
+    // Embree's tfar is the closest hit rounded to float; the exact one decides, ties included.
+    const double bound = std::min(rc->tmax, rc->best ? std::nextafter(rc->best_t, INFINITY)
+                                                     : static_cast<double>(tfar));
+    if (!intersect_analytic(s, lr.o, lr.d, rc->tmin, bound, t, n, rc->on * lr.len)) continue;
+    const std::uint64_t key = tie_key(inst, static_cast<std::uint32_t>(s.object));
+    if (rc->loses(t, key)) continue;
+    rc->accept(t, key);
+    tfar = static_cast<float>(t);
+    RTCHitN_Ng_x(hit, args->N, k) = static_cast<float>(n[0]);
+    RTCHitN_Ng_y(hit, args->N, k) = static_cast<float>(n[1]);
+    RTCHitN_Ng_z(hit, args->N, k) = static_cast<float>(n[2]);
+    RTCHitN_u(hit, args->N, k) = 0;
+    RTCHitN_v(hit, args->N, k) = 0;
+    RTCHitN_primID(hit, args->N, k) = args->primID;
+    RTCHitN_geomID(hit, args->N, k) = args->geomID;
+    RTCHitN_instID(hit, args->N, k, 0) = inst;
+    rc->user_hit = true;
+    rc->inst = inst;
+    rc->geom = args->geomID;
+    rc->prim = args->primID;
+    rc->t = t;
+    rc->normal = n;
+  }
 }
 
 void user_occluded(const RTCOccludedFunctionNArguments* args) {
-  if (args->valid[0] == 0) return;
-  auto* rc = reinterpret_cast<RayContext*>(args->context);
+  auto* head = reinterpret_cast<RayContext*>(args->context);
   const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
-  const LocalRay lr = local_ray(*rc, args->context->instID[0]);
-  float& tfar = RTCRayN_tfar(args->ray, args->N, 0);
-  double t;
-  Vec3 n;
-  if (intersect_analytic(proto->analytic[args->primID], lr.o, lr.d, rc->tmin,
-                         std::min(rc->tmax, static_cast<double>(tfar)), t, n, rc->on * lr.len))
-    tfar = -std::numeric_limits<float>::infinity();
+  const unsigned inst = args->context->instID[0];
+  for (unsigned k = 0; k < args->N; ++k) {
+    if (args->valid[k] == 0) continue;
+    RayContext& rc = head->lane(k);
+    const LocalRay lr = local_ray(rc, inst);
+    float& tfar = RTCRayN_tfar(args->ray, args->N, k);
+    double t;
+    Vec3 n;
+    if (intersect_analytic(proto->analytic[args->primID], lr.o, lr.d, rc.tmin,
+                           std::min(rc.tmax, static_cast<double>(tfar)), t, n, rc.on * lr.len))
+      tfar = -std::numeric_limits<float>::infinity();
+  }
 }
 
 // Embree's float distance only nominates a triangle; the exact distance to the polygon's
 // plane decides whether it lies in (tmin, tmax) — this is what stops rays leaving a surface
 // from hitting it again.
 void triangle_filter(const RTCFilterFunctionNArguments* args) {
-  if (args->valid[0] == 0) return;
-  auto* rc = reinterpret_cast<RayContext*>(args->context);
-  if (rc->raw) return;
+  auto* head = reinterpret_cast<RayContext*>(args->context);
+  if (head->raw) return;
   const auto* proto = static_cast<const Prototype*>(args->geometryUserPtr);
-  const unsigned inst = RTCHitN_instID(args->hit, args->N, 0, 0);
-  const unsigned prim = RTCHitN_primID(args->hit, args->N, 0);
-  const LocalRay lr = local_ray(*rc, inst);
-  double t;
-  Vec3 n;
-  // A ray whose origin lies in the triangle's plane (within rc->on) cannot meet it again.
-  if (!triangle_distance(*proto, prim, lr.o, lr.d, lr.len, t, n) ||
-      !(t > rc->tmin && t < rc->tmax) || std::abs(t * dot(n, lr.d)) <= rc->on * lr.len) {
-    args->valid[0] = 0;
-    return;
+  for (unsigned k = 0; k < args->N; ++k) {
+    if (args->valid[k] == 0) continue;
+    RayContext* rc = &head->lane(k);
+    const unsigned inst = RTCHitN_instID(args->hit, args->N, k, 0);
+    const unsigned prim = RTCHitN_primID(args->hit, args->N, k);
+    const LocalRay lr = local_ray(*rc, inst);
+    double t;
+    Vec3 n;
+    // A ray whose origin lies in the triangle's plane (within rc->on) cannot meet it again.
+    if (!triangle_distance(*proto, prim, lr.o, lr.d, lr.len, t, n) ||
+        !(t > rc->tmin && t < rc->tmax) || std::abs(t * dot(n, lr.d)) <= rc->on * lr.len) {
+      args->valid[k] = 0;
+      continue;
+    }
+    const std::uint32_t object =
+        proto->mesh != nullptr
+            ? proto->mesh_triangle[prim]
+            : static_cast<std::uint32_t>(proto->polygons[proto->triangle_polygon[prim]].object);
+    const std::uint64_t key = tie_key(inst, object);
+    if (rc->closest && rc->loses(t, key)) {
+      args->valid[k] = 0;
+      continue;
+    }
+    // Occlusion queries stop at any hit; only closest-hit queries keep the best.
+    if (rc->closest) rc->accept(t, key, n);
   }
-  const std::uint32_t object =
-      proto->mesh != nullptr
-          ? proto->mesh_triangle[prim]
-          : static_cast<std::uint32_t>(proto->polygons[proto->triangle_polygon[prim]].object);
-  const std::uint64_t key = tie_key(inst, object);
-  if (rc->closest && rc->loses(t, key)) {
-    args->valid[0] = 0;
-    return;
-  }
-  // Occlusion queries stop at any hit; only closest-hit queries keep the best.
-  if (rc->closest) rc->accept(t, key, n);
 }
 
 } // namespace radcl::geometry

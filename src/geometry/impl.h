@@ -79,6 +79,9 @@ struct SceneGeometry::Impl {
   double margin = 1e-6; // slack for Embree's float distances
   double radius = 0;    // of the bounding sphere about the centre, margin included
   double far = 0;       // origins farther (largest centred coordinate) start at that sphere
+  // Rays a query block hands Embree at once (1, 4, 8 or 16): the widest packet the CPU
+  // traverses natively, or RADCL_RAY_PACKET's.
+  int packet = 1;
   SurfaceCounts counts;
   std::vector<DistantSource> sources;
   std::vector<std::shared_ptr<const void>> keep_alive; // placed octrees and meshes
@@ -119,6 +122,10 @@ struct RayContext {
   Vec3 best_normal{};   // a triangle's (local) plane normal: the answer needs not compute it again
   bool closest = false; // a closest-hit query (not an occlusion test)
   bool raw = false;     // SceneGeometry::intersect_raw: the filter accepts every candidate
+  // A packet query: the context Embree is given heads it, and lane k's ray is lanes[k]
+  // (Embree calls back with the packet's size and lane order); null: the context is the ray.
+  RayContext* lanes = nullptr;
+  RayContext& lane(unsigned k) { return lanes ? lanes[k] : *this; }
   // Whether a candidate at exact distance cand_t loses to the current closest hit.
   bool loses(double cand_t, std::uint64_t key) const {
     return best && (cand_t > best_t || (cand_t == best_t && key > best_key));

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -83,6 +84,123 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
 
 } // namespace
 
+namespace {
+
+// The answer from Embree's winning primitive and what the callbacks kept of it, in double.
+std::optional<Hit> answer(const SceneGeometry::Impl& g, const RayContext& rc, unsigned geom,
+                          unsigned prim, unsigned inst, float u, float v) {
+  if (geom == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  Hit h;
+  h.placement = inst == RTC_INVALID_GEOMETRY_ID ? 0 : g.top_geom_placement[inst];
+  const PlacementRecord& rec = g.records[h.placement];
+  const Prototype& p = g.prototypes[rec.prototype];
+  h.instance = g.placements[h.placement].instance_object;
+  Vec3 n;
+  if (geom == p.user_geom) {
+    if (!rc.user_hit || rc.geom != geom || rc.inst != inst)
+      throw std::logic_error("geometry: lost the exact user-geometry hit");
+    h.t = rc.t;
+    n = rc.normal;
+    h.object = p.analytic[prim].object;
+  } else {
+    // The filter accepted this triangle last, with its exact distance and plane normal (the
+    // same local ray, so the same values); without the filter (raw queries) they are computed.
+    if (rc.best && !rc.raw) {
+      h.t = rc.best_t;
+      n = rc.best_normal;
+    } else {
+      const Vec3 o = rec.from_world.point(rc.org), d = rec.from_world.vector(rc.dir);
+      if (!triangle_distance(p, prim, o, d, length(d), h.t, n)) return std::nullopt;
+    }
+    h.u = u;
+    h.v = v;
+    if (p.mesh != nullptr) {
+      h.object = rec.mesh_object;
+      h.prim = p.mesh_triangle[prim];
+    } else {
+      const PolygonRecord& pol = p.polygons[p.triangle_polygon[prim]];
+      h.object = pol.object;
+      h.prim = prim - pol.first_triangle;
+    }
+  }
+  h.point = madd(rc.org, rc.dir, h.t);
+  h.t += rc.shift;
+  h.normal = normalized(rec.to_world.vector(n));
+  h.front = dot(h.normal, rc.dir) < 0;
+  return h;
+}
+
+template <int K> struct Packet;
+template <> struct Packet<4> {
+  using RayHit = RTCRayHit4;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
+    rtcIntersect4(v, s, c, r);
+  }
+};
+template <> struct Packet<8> {
+  using RayHit = RTCRayHit8;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
+    rtcIntersect8(v, s, c, r);
+  }
+};
+template <> struct Packet<16> {
+  using RayHit = RTCRayHit16;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
+    rtcIntersect16(v, s, c, r);
+  }
+};
+
+// Lane k of a packet: a single ray as setup() made it.
+template <class RH> void put_lane(RH& rh, int k, const RTCRay& r) {
+  rh.ray.org_x[k] = r.org_x;
+  rh.ray.org_y[k] = r.org_y;
+  rh.ray.org_z[k] = r.org_z;
+  rh.ray.dir_x[k] = r.dir_x;
+  rh.ray.dir_y[k] = r.dir_y;
+  rh.ray.dir_z[k] = r.dir_z;
+  rh.ray.tnear[k] = r.tnear;
+  rh.ray.tfar[k] = r.tfar;
+  rh.ray.time[k] = r.time;
+  rh.ray.mask[k] = r.mask;
+  rh.ray.id[k] = static_cast<unsigned>(k);
+  rh.ray.flags[k] = r.flags;
+  rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+}
+
+// Rays [0, n) (n <= K) in one packet; every lane's query is set up and answered as a single
+// ray's, so the answers are intersect()'s.
+template <int K>
+void intersect_packet(const SceneGeometry::Impl& g, const Ray* rays, std::size_t n,
+                      std::optional<Hit>* hits) {
+  alignas(64) typename Packet<K>::RayHit rh;
+  alignas(64) int valid[K];
+  std::array<RayContext, K> lanes;
+  RayContext head;
+  rtcInitIntersectContext(&head.ctx);
+  head.impl = &g;
+  head.lanes = lanes.data();
+  bool any = false;
+  for (int k = 0; k < K; ++k) {
+    valid[k] = 0;
+    if (static_cast<std::size_t>(k) >= n) continue;
+    const Ray& q = rays[k];
+    RTCRay r;
+    if (!setup(g, q.org, q.dir, q.tmin, q.tmax, q.free_origin, lanes[k], r)) continue;
+    lanes[k].closest = true;
+    put_lane(rh, k, r);
+    valid[k] = -1;
+    any = true;
+  }
+  if (any) Packet<K>::intersect(valid, g.top, &head.ctx, &rh);
+  for (std::size_t k = 0; k < n; ++k)
+    hits[k] = valid[k] ? answer(g, lanes[k], rh.hit.geomID[k], rh.hit.primID[k],
+                                rh.hit.instID[0][k], rh.hit.u[k], rh.hit.v[k])
+                       : std::nullopt;
+}
+
+} // namespace
+
 std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, double tmin,
                                             double tmax, bool free_origin) const {
   const Impl& g = *impl_;
@@ -93,47 +211,33 @@ std::optional<Hit> SceneGeometry::intersect(const Vec3d& org, const Vec3d& dir, 
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(g.top, &rc.ctx, &rh);
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  return answer(g, rc, rh.hit.geomID, rh.hit.primID, rh.hit.instID[0], rh.hit.u, rh.hit.v);
+}
 
-  const unsigned inst = rh.hit.instID[0];
-  Hit h;
-  h.placement = inst == RTC_INVALID_GEOMETRY_ID ? 0 : g.top_geom_placement[inst];
-  const PlacementRecord& rec = g.records[h.placement];
-  const Prototype& p = g.prototypes[rec.prototype];
-  h.instance = g.placements[h.placement].instance_object;
-  Vec3 n;
-  if (rh.hit.geomID == p.user_geom) {
-    if (!rc.user_hit || rc.geom != rh.hit.geomID || rc.inst != inst)
-      throw std::logic_error("geometry: lost the exact user-geometry hit");
-    h.t = rc.t;
-    n = rc.normal;
-    h.object = p.analytic[rh.hit.primID].object;
-  } else {
-    // The filter accepted this triangle last, with its exact distance and plane normal (the
-    // same local ray, so the same values); without the filter (raw queries) they are computed.
-    if (rc.best && !rc.raw) {
-      h.t = rc.best_t;
-      n = rc.best_normal;
-    } else {
-      const Vec3 o = rec.from_world.point(rc.org), d = rec.from_world.vector(rc.dir);
-      if (!triangle_distance(p, rh.hit.primID, o, d, length(d), h.t, n)) return std::nullopt;
-    }
-    h.u = rh.hit.u;
-    h.v = rh.hit.v;
-    if (p.mesh != nullptr) {
-      h.object = rec.mesh_object;
-      h.prim = p.mesh_triangle[rh.hit.primID];
-    } else {
-      const PolygonRecord& pol = p.polygons[p.triangle_polygon[rh.hit.primID]];
-      h.object = pol.object;
-      h.prim = rh.hit.primID - pol.first_triangle;
+void SceneGeometry::intersect_block(const Ray* rays, std::size_t n,
+                                    std::optional<Hit>* hits) const {
+  const Impl& g = *impl_;
+  for (std::size_t a = 0; a < n; a += static_cast<std::size_t>(g.packet)) {
+    const std::size_t m = std::min(n - a, static_cast<std::size_t>(g.packet));
+    switch (m == 1 ? 1 : g.packet) {
+    case 16:
+      intersect_packet<16>(g, rays + a, m, hits + a);
+      break;
+    case 8:
+      intersect_packet<8>(g, rays + a, m, hits + a);
+      break;
+    case 4:
+      intersect_packet<4>(g, rays + a, m, hits + a);
+      break;
+    default:
+      const Ray& q = rays[a];
+      hits[a] = intersect(q.org, q.dir, q.tmin, q.tmax, q.free_origin);
     }
   }
-  h.point = madd(rc.org, rc.dir, h.t);
-  h.t += rc.shift;
-  h.normal = normalized(rec.to_world.vector(n));
-  h.front = dot(h.normal, rc.dir) < 0;
-  return h;
+}
+
+int SceneGeometry::packet_width() const {
+  return impl_->packet;
 }
 
 bool SceneGeometry::occluded(const Vec3d& org, const Vec3d& dir, double tmin, double tmax,
@@ -149,9 +253,7 @@ bool SceneGeometry::occluded(const Vec3d& org, const Vec3d& dir, double tmin, do
 void SceneGeometry::intersect(std::span<const Ray> rays, std::span<std::optional<Hit>> hits) const {
   if (hits.size() != rays.size()) throw std::invalid_argument("intersect: size mismatch");
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 64), [&](const auto& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i)
-      hits[i] =
-          intersect(rays[i].org, rays[i].dir, rays[i].tmin, rays[i].tmax, rays[i].free_origin);
+    intersect_block(rays.data() + r.begin(), r.size(), hits.data() + r.begin());
   });
 }
 
@@ -165,35 +267,71 @@ void SceneGeometry::occluded(std::span<const Ray> rays, std::span<std::uint8_t> 
   });
 }
 
-void SceneGeometry::intersect_raw(std::span<const Ray> rays, std::span<float> t) const {
+namespace {
+
+// A raw ray as Embree alone would take it: float, re-centred, nothing skipped but tmin.
+RTCRay raw_ray(const SceneGeometry::Impl& g, const Ray& q) {
+  RTCRay r;
+  r.org_x = static_cast<float>(q.org[0] - g.centre[0]);
+  r.org_y = static_cast<float>(q.org[1] - g.centre[1]);
+  r.org_z = static_cast<float>(q.org[2] - g.centre[2]);
+  r.dir_x = static_cast<float>(q.dir[0]);
+  r.dir_y = static_cast<float>(q.dir[1]);
+  r.dir_z = static_cast<float>(q.dir[2]);
+  r.tnear = static_cast<float>(std::max(0.0, q.tmin)); // a negative tmin: none
+  r.tfar = std::numeric_limits<float>::infinity();
+  r.time = 0;
+  r.mask = ~0u;
+  r.id = 0;
+  r.flags = 0;
+  return r;
+}
+
+template <int K>
+void raw_packet(const SceneGeometry::Impl& g, RayContext& rc, const Ray* rays, std::size_t n,
+                float* t) {
+  alignas(64) typename Packet<K>::RayHit rh;
+  alignas(64) int valid[K];
+  for (int k = 0; k < K; ++k) {
+    valid[k] = static_cast<std::size_t>(k) < n ? -1 : 0;
+    if (valid[k]) put_lane(rh, k, raw_ray(g, rays[k]));
+  }
+  rtcInitIntersectContext(&rc.ctx);
+  Packet<K>::intersect(valid, g.top, &rc.ctx, &rh);
+  for (std::size_t k = 0; k < n; ++k)
+    t[k] = rh.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
+                                                       : rh.ray.tfar[k];
+}
+
+} // namespace
+
+void SceneGeometry::intersect_raw(std::span<const Ray> rays, std::span<float> t, int width) const {
   if (t.size() != rays.size()) throw std::invalid_argument("intersect_raw: size mismatch");
   const Impl& g = *impl_;
+  const int w = width > 0 ? width : g.packet;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 64), [&](const auto& r) {
     RayContext rc;
     rc.impl = &g;
     rc.raw = true;
     rc.tmax = 1e300;
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      rtcInitIntersectContext(&rc.ctx);
-      const Ray& q = rays[i];
-      RTCRayHit rh;
-      rh.ray.org_x = static_cast<float>(q.org[0] - g.centre[0]);
-      rh.ray.org_y = static_cast<float>(q.org[1] - g.centre[1]);
-      rh.ray.org_z = static_cast<float>(q.org[2] - g.centre[2]);
-      rh.ray.dir_x = static_cast<float>(q.dir[0]);
-      rh.ray.dir_y = static_cast<float>(q.dir[1]);
-      rh.ray.dir_z = static_cast<float>(q.dir[2]);
-      rh.ray.tnear = static_cast<float>(std::max(0.0, q.tmin)); // a negative tmin: none
-      rh.ray.tfar = std::numeric_limits<float>::infinity();
-      rh.ray.time = 0;
-      rh.ray.mask = ~0u;
-      rh.ray.id = 0;
-      rh.ray.flags = 0;
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(g.top, &rc.ctx, &rh);
-      t[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
-                                                      : rh.ray.tfar;
+    for (std::size_t i = r.begin(); i < r.end(); i += static_cast<std::size_t>(w)) {
+      const std::size_t m = std::min(r.end() - i, static_cast<std::size_t>(w));
+      if (w == 16) {
+        raw_packet<16>(g, rc, rays.data() + i, m, t.data() + i);
+      } else if (w == 8) {
+        raw_packet<8>(g, rc, rays.data() + i, m, t.data() + i);
+      } else if (w == 4) {
+        raw_packet<4>(g, rc, rays.data() + i, m, t.data() + i);
+      } else {
+        rtcInitIntersectContext(&rc.ctx);
+        RTCRayHit rh;
+        rh.ray = raw_ray(g, rays[i]);
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(g.top, &rc.ctx, &rh);
+        t[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
+                                                        : rh.ray.tfar;
+      }
     }
   });
 }

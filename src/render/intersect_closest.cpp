@@ -1,4 +1,5 @@
 // Stage: the nearest hit of every ray of a chunk (Embree on the host), as the kernels' records.
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -76,14 +77,23 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
   std::vector<std::uint8_t>& kept = trace_kept;
   kept.assign((n + kRange - 1) / kRange, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kept.size()), [&](const auto& ranges) {
-    for (std::size_t i = ranges.begin() * kRange; i < std::min(n, ranges.end() * kRange); ++i) {
-      const rc_ray& r = queue[i];
-      const geometry::Ray ray = query_ray(r, primaries);
-      std::optional<geometry::Hit> h =
-          geom.intersect(ray.org, ray.dir, ray.tmin, ray.tmax, ray.free_origin);
-      hits[i] = to_device(ray, h);
-      if (r.flags & kKept) kept[i / kRange] = 1; // this task's own ranges
-      if (primaries || (r.flags & kKept)) gh[i] = std::move(h);
+    // Blocks of consecutive rays (a hemisphere's samples leave one point) go to Embree in
+    // packets.
+    constexpr std::size_t kBlock = 16;
+    std::array<geometry::Ray, kBlock> ray;
+    std::array<std::optional<geometry::Hit>, kBlock> h;
+    const std::size_t end = std::min(n, ranges.end() * kRange);
+    for (std::size_t a = ranges.begin() * kRange; a < end; a += kBlock) {
+      const std::size_t m = std::min(kBlock, end - a);
+      for (std::size_t k = 0; k < m; ++k)
+        ray[k] = query_ray(queue[a + k], primaries);
+      geom.intersect_block(ray.data(), m, h.data());
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t i = a + k;
+        hits[i] = to_device(ray[k], h[k]);
+        if (queue[i].flags & kKept) kept[i / kRange] = 1; // this task's own ranges
+        if (primaries || (queue[i].flags & kKept)) gh[i] = std::move(h[k]);
+      }
     }
   });
   (primaries ? stats.primary : stats.secondary) += n;

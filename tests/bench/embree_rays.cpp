@@ -1,6 +1,7 @@
 // How far radcl's ray queries are from the machine's limit: the same rays through radcl's
 // query (SceneGeometry::intersect: double setup, exact filters, the hit rebuilt in double) and
-// through Embree's float traversal alone (SceneGeometry::intersect_raw), on every host core.
+// through Embree's float traversal alone (SceneGeometry::intersect_raw), on every host core,
+// both in Embree packets of the same width (and raw Embree one ray at a time besides).
 //
 // The rays are those of an -aa 0 irradiance run (peers.sh P2): from each sensor, a stratified
 // cosine-weighted hemisphere of n x n directions (the first bounce), then from each point
@@ -67,9 +68,12 @@ void measure(const char* name, const radcl::geometry::SceneGeometry& g,
   std::vector<float> t(rays.size());
   const double radcl_s = best_seconds(repeats, [&] { g.intersect(rays, hits); });
   const double raw_s = best_seconds(repeats, [&] { g.intersect_raw(rays, t); });
+  const double raw1_s = best_seconds(repeats, [&] { g.intersect_raw(rays, t, 1); });
   const double n = static_cast<double>(rays.size());
-  std::printf("%-14s %10zu rays  radcl %6.2f Mrays/s  raw Embree %6.2f Mrays/s  radcl/raw %.2f\n",
-              name, rays.size(), n / radcl_s / 1e6, n / raw_s / 1e6, raw_s / radcl_s);
+  std::printf("%-14s %10zu rays  radcl %6.2f Mrays/s  raw Embree %6.2f Mrays/s  radcl/raw %.2f"
+              "  (raw single rays %6.2f Mrays/s)\n",
+              name, rays.size(), n / radcl_s / 1e6, n / raw_s / 1e6, raw_s / radcl_s,
+              n / raw1_s / 1e6);
 }
 
 } // namespace
@@ -123,7 +127,8 @@ int main(int argc, char** argv) {
       r.tmin = -1;
       second.push_back(r);
     }
-    std::printf("%s: %d host threads\n", argv[1], tbb::info::default_concurrency());
+    std::printf("%s: %d host threads, rays in packets of %d (RADCL_RAY_PACKET)\n", argv[1],
+                tbb::info::default_concurrency(), g.packet_width());
     measure("first bounce", g, first, repeats);
     measure("second bounce", g, second, repeats);
     return 0;

@@ -108,13 +108,20 @@ public:
   bool occluded(const Vec3d& org, const Vec3d& dir, double tmin = 0, double tmax = 1e300,
                 bool free_origin = false) const;
 
+  // Rays [0, n) on the caller's thread, each answered as intersect() answers it: Embree
+  // traverses them in packets of packet_width() (rays that leave one point, as a hemisphere's
+  // samples, share its node visits), each lane set up and answered in double on its own.
+  void intersect_block(const Ray* rays, std::size_t n, std::optional<Hit>* hits) const;
+  int packet_width() const;
+
   // Waves of rays, in parallel over the host cores. Output spans must match the input size.
   void intersect(std::span<const Ray> rays, std::span<std::optional<Hit>> hits) const;
   void occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
   // The machine's limit for the same rays, for tests/bench/embree_rays: Embree's float
   // traversal alone (every candidate accepted, nothing tested or rebuilt in double), each
   // ray's float distance (infinity: a miss) written to `t`. Not an answer to shade with.
-  void intersect_raw(std::span<const Ray> rays, std::span<float> t) const;
+  // `width`: rays per Embree call (1, 4, 8, 16; 0: packet_width(), as intersect_block).
+  void intersect_raw(std::span<const Ray> rays, std::span<float> t, int width = 0) const;
 
   // World bounding box of everything in Embree (double); its centre is the re-centring origin.
   std::array<Vec3d, 2> bounds() const;
