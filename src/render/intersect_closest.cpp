@@ -23,25 +23,28 @@ geometry::Ray Renderer::Impl::query_ray(const rc_ray& r, bool primary) const {
   return ray;
 }
 
-rc_hit Renderer::Impl::to_device(const geometry::Ray& ray,
-                                 const std::optional<geometry::Hit>& h) const {
-  rc_hit out{};
-  out.surface = RC_NONE;
-  out.source = RC_NONE;
+// Written field by field into the queue's row: a record built aside and copied in stalls on
+// forwarding its narrow stores to the copy's wide loads.
+void Renderer::Impl::to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h,
+                               rc_hit& out) const {
+  std::uint32_t surface;
   if (h) {
     out.pos = f4(h->point[0] - centre[0], h->point[1] - centre[1], h->point[2] - centre[2], h->t);
     out.nrm = f4(h->normal[0], h->normal[1], h->normal[2], 0);
     out.uv = f4(h->u, h->v, 0, 0);
-    out.surface = cs.surface_of(*h);
+    surface = cs.surface_of(*h);
     out.prim = h->prim;
     out.front = h->front ? 1 : 0;
   } else {
     out.pos = f4(0, 0, 0, -1);
+    out.nrm = f4(0, 0, 0, 0);
+    out.uv = f4(0, 0, 0, 0);
+    out.prim = 0;
     out.front = 1;
-    out.surface = distant_surface(cs, geom, ray.dir);
+    surface = distant_surface(cs, geom, ray.dir);
   }
-  if (out.surface < cs.surfaces.size()) out.source = cs.surfaces[out.surface].source;
-  return out;
+  out.surface = surface;
+  out.source = surface < cs.surfaces.size() ? cs.surfaces[surface].source : RC_NONE;
 }
 
 // RADCL_PROFILE=raw: the chunk's rays as trace() hands them to the query, through Embree's
@@ -90,7 +93,7 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
       geom.intersect_block(ray.data(), m, h.data());
       for (std::size_t k = 0; k < m; ++k) {
         const std::size_t i = a + k;
-        hits[i] = to_device(ray[k], h[k]);
+        to_device(ray[k], h[k], hits[i]);
         if (queue[i].flags & kKept) kept[i / kRange] = 1; // this task's own ranges
         if (primaries || (queue[i].flags & kKept)) gh[i] = std::move(h[k]);
       }

@@ -95,7 +95,7 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
         }
         geom.intersect_block(ray.data(), b, h.data());
         for (std::size_t k = 0; k < b; ++k)
-          hits[a + k] = to_device(ray[k], h[k]);
+          to_device(ray[k], h[k], hits[a + k]);
       }
     });
     stats.shadow += m;

@@ -132,7 +132,8 @@ struct Renderer::Impl {
   void trace(std::span<const rc_ray> queue, HitQueue& hits, std::span<PrimaryResult> res,
              bool primaries);
   // The device record of a geometry answer; a miss may still hit a distant source.
-  rc_hit to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h) const;
+  void to_device(const geometry::Ray& ray, const std::optional<geometry::Hit>& h,
+                 rc_hit& out) const;
   // A queued ray as the geometry's query takes it (world origin, tmin, tmax, meter origin).
   geometry::Ray query_ray(const rc_ray& r, bool primary) const;
   void trace_raw(std::span<const rc_ray> queue, bool primaries); // RADCL_PROFILE=raw
