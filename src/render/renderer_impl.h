@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
 #include "generation_mirror.h"
 #include "radcl/ambient/cache.h"
 #include "radcl/ambient/leaks.h"
@@ -73,6 +75,13 @@ struct Renderer::Impl {
   }
 
   // ---- The driver (wave_loop.cpp) ----
+  // The next chunk's trace, beside the shading, runs in an arena of low priority: the host
+  // cores it holds go to the shading thread's own parallel steps (shadow rays, the tally,
+  // copies: the path every chunk waits on) whenever those have work, and back to tracing ahead
+  // when they have none. Made once: a cache build runs hundreds of batches.
+  tbb::task_arena ahead_arena{tbb::task_arena::automatic, 1,
+                              std::getenv("RADCL_AHEAD_NORMAL") ? tbb::task_arena::priority::normal
+                                                                : tbb::task_arena::priority::low};
   // Per-wave device buffers and host queues, kept between waves and batches.
   ScratchPool scratch{ctx};
   std::vector<RayQueue> spare_rays;

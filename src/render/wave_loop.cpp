@@ -8,7 +8,6 @@
 #include "radcl/render/irradiance_meter.h"
 #include "renderer_impl.h"
 
-#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 namespace radcl::render {
@@ -157,13 +156,6 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   HitQueue& ahead = ahead_hold.v;
   const std::size_t chunk = chunk_rays();
   const bool overlap = !std::getenv("RADCL_NO_OVERLAP");
-  // The next chunk's trace runs in an arena of low priority: the host cores it holds go to
-  // this thread's own parallel steps (shadow rays, the tally, copies: the path every chunk
-  // waits on) whenever those have work, and back to tracing ahead when they have none.
-  static const bool low = !std::getenv("RADCL_AHEAD_NORMAL");
-  tbb::task_arena ahead_arena(tbb::task_arena::automatic, 1,
-                              low ? tbb::task_arena::priority::low
-                                  : tbb::task_arena::priority::normal);
   // A chunk's room at once: pinned memory is costly to take and give back.
   for (HitQueue* h : {&hits, &ahead})
     if (h->capacity() < chunk) h->reserve(chunk);
