@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 
 #include "radcl/rng.h"
 
@@ -166,6 +167,11 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
     }
     return;
   }
+  std::optional<PhaseProfile::StepClock> clock;
+  if (prof_) clock.emplace(*prof_);
+  const auto mark = [&](PhaseProfile::Step s) {
+    if (clock) clock->mark(s);
+  };
   new_nodes_.resize(n);
   new_hemis_.resize(n);
   plain_.resize(n);
@@ -194,6 +200,7 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
       plain_[i] = plain;
     }
   });
+  mark(PhaseProfile::StepTallyChildren);
   const auto node0 = static_cast<std::uint32_t>(nodes_.size());
   const auto hemi0 = static_cast<std::uint32_t>(hemis_.size());
   std::uint32_t tn = 0, th = 0;
@@ -206,6 +213,7 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
   }
   nodes_.resize(nodes_.size() + tn);
   hemis_.resize(hemis_.size() + th);
+  mark(PhaseProfile::StepTallyOffsets);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       // Rays without a hemisphere (most, deeper down) need not be read again.
@@ -239,9 +247,11 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
       settle(ray.tally, req);
     }
   };
+  mark(PhaseProfile::StepTallyHemis);
   constexpr std::size_t kRun = 4096;
   if (unordered.load() || n < 2 * kRun) {
     finish(0, n, requests_);
+    mark(PhaseProfile::StepTallySettle);
     return;
   }
   // Cuts where a primary's rays begin (a primary may have thousands: searched, not walked).
@@ -264,6 +274,7 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
   for (auto& q : req)
     for (auto& x : q)
       requests_.push_back(std::move(x));
+  mark(PhaseProfile::StepTallySettle);
 }
 
 void TallyTree::supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren) {

@@ -82,7 +82,10 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   mirrored = &mirror_sums;
   results = res;
   root_depth.assign(prim.size(), 0);
-  if (tree) tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
+  if (tree) {
+    tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
+    tally.set_profile(&prof);
+  }
   const bool in_medium = has_medium(settings);
   const Vec3d medium = in_medium ? settings.me : Vec3d{0, 0, 0};
   for_rows(prim.size(), [&](std::size_t i) {

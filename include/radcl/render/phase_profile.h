@@ -82,6 +82,12 @@ public:
     StepShadowHost, // the host's pass over its states (reached, blocked, going on)
     StepSumsWait,   // the sums' wait (rc_accumulate and the totals read back)
     StepSumsTally,  // the -as tally tree fed with the slice (or the plain sums)
+    // Its parts (TallyTree::shaded_slice): the pass over each ray's children (their
+    // hemispheres counted), the serial offsets, the hemispheres made, the sums and settling.
+    StepTallyChildren,
+    StepTallyOffsets,
+    StepTallyHemis,
+    StepTallySettle,
     kSteps
   };
   void add_step(Step s, double seconds) { step_[s] += seconds; }
@@ -146,10 +152,11 @@ public:
                    raw_sec_, static_cast<unsigned long long>(raw_rays_), rays / raw_sec_ / 1e6,
                    trace > 0 ? rays / trace / 1e6 : 0.0, trace > 0 ? raw_sec_ / trace : 0.0);
     }
-    static const char* steps[] = {"shade step upload",  "shade step kernel", "shade step counts",
-                                  "shade step offsets", "shade step pack",   "shade step children",
-                                  "shadow step send",   "shadow step wait",  "shadow step host",
-                                  "accum wait",         "accum tally"};
+    static const char* steps[] = {
+        "shade step upload", "shade step kernel",   "shade step counts", "shade step offsets",
+        "shade step pack",   "shade step children", "shadow step send",  "shadow step wait",
+        "shadow step host",  "accum wait",          "accum tally",       "  tally children",
+        "  tally offsets",   "  tally hemispheres", "  tally settling"};
     static_assert(std::size(steps) == kSteps);
     if (waves_)
       for (int i = 0; i < kSteps; ++i)

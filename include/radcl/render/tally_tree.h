@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "radcl/device_types.h"
+#include "radcl/render/phase_profile.h"
 #include "radcl/util/no_init.h"
 
 namespace radcl::render {
@@ -73,6 +74,9 @@ public:
   // Super-sample children of request `r` (their cell field names the division).
   void supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren);
 
+  // RADCL_PROFILE=waves: shaded_slice's parts timed into `p` (null: not timed).
+  void set_profile(PhaseProfile* p) { prof_ = p; }
+
   // Requests made since the last call.
   std::vector<SuperRequest> take_requests() { return std::move(requests_); }
 
@@ -129,6 +133,7 @@ private:
   std::vector<Traced> traced_;
   bool trace_ = false;
   std::uint32_t seed_ = 0;
+  PhaseProfile* prof_ = nullptr;
 };
 
 } // namespace radcl::render
