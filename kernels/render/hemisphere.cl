@@ -33,7 +33,7 @@ static inline float3 rc_hemi_dir(float3 n, float3 ux, float3 uy, uint i, uint j,
                                  float s1) {
   float2 d = rc_square_to_disk((j + s0) / ns, (i + s1) / ns);
   float z = sqrt(fmax(0.0f, 1.0f - d.x * d.x - d.y * d.y));
-  return normalize(d.x * ux + d.y * uy + z * n);
+  return rc_unit(d.x * ux + d.y * uy + z * n);
 }
 
 /* Indirect diffuse light without a cache (-aa 0): Radiance's stratified hemisphere of n x n
@@ -88,8 +88,7 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
   uint ns = (uint)(sqrt((float)P->ad * wt) + 0.5f);
   if (ns < 1u) ns = 1u;
   float3 c = acoef / (float)(ns * ns);
-  float3 ux =
-      normalize(fabs(n.x) < 0.6f ? cross(n, (float3)(1, 0, 0)) : cross(n, (float3)(0, 1, 0)));
+  float3 ux = rc_unit(fabs(n.x) < 0.6f ? cross(n, (float3)(1, 0, 0)) : cross(n, (float3)(0, 1, 0)));
   float3 uy = cross(n, ux);
   uint which = o->nhemi++;
   if (o->super) {

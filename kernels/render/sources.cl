@@ -22,6 +22,7 @@
 #define RADCL_RENDER_SOURCES_CL
 
 #include "radcl/device_types.h"
+#include "render/unit_vector.cl"
 
 #define RC_SRC_MAXSPLIT 63 /* internal nodes of Radiance's 64-part limit */
 #define RC_SRC_FTINY 1e-6f /* Radiance's FTINY */
@@ -240,7 +241,7 @@ static inline void rc_src_frame(float3 e, float3* a, float3* b) {
   float3 t = fabs(e.x) < 0.6f
                  ? (float3)(1.0f, 0.0f, 0.0f)
                  : (fabs(e.y) < 0.6f ? (float3)(0.0f, 1.0f, 0.0f) : (float3)(0.0f, 0.0f, 1.0f));
-  *a = normalize(cross(t, e));
+  *a = rc_unit(cross(t, e));
   *b = cross(e, *a);
 }
 
@@ -354,15 +355,19 @@ static inline int rc_source_sample_part(global const rc_source* s, global const 
   float3 l;
   float d, om;
   if (s->kind == RC_SRC_DISTANT) {
-    /* Uniform over the source's cone, shrunk by dj. */
-    float3 a, b, e = s->pos.xyz;
-    rc_src_frame(e, &a, &b);
-    float2 w = rc_src_concentric(dj * (2.0f * xi - 1.0f));
-    float rho2 = dot(w, w), one_minus_cos = s->axis.w * (0.5f * M_1_PI_F);
-    float cost = 1.0f - rho2 * one_minus_cos;
-    float sint = sqrt(fmax(0.0f, 1.0f - cost * cost));
-    float2 cs = rho2 > 0.0f ? w * rsqrt(rho2) : (float2)(1.0f, 0.0f);
-    l = normalize(cost * e + sint * (cs.x * a + cs.y * b));
+    /* Uniform over the source's cone, shrunk by dj; without jitter, its centre. */
+    float3 e = s->pos.xyz;
+    l = e;
+    if (dj > 0.0f) {
+      float3 a, b;
+      rc_src_frame(e, &a, &b);
+      float2 w = rc_src_concentric(dj * (2.0f * xi - 1.0f));
+      float rho2 = dot(w, w), one_minus_cos = s->axis.w * (0.5f * M_1_PI_F);
+      float cost = 1.0f - rho2 * one_minus_cos;
+      float sint = sqrt(fmax(0.0f, 1.0f - cost * cost));
+      float2 cs = rho2 > 0.0f ? w * rsqrt(rho2) : (float2)(1.0f, 0.0f);
+      l = rc_unit(cost * e + sint * (cs.x * a + cs.y * b));
+    }
     d = RC_SRC_FAR;
     om = s->axis.w / (float)cells;
   } else if (s->kind == RC_SRC_SPHERE) {

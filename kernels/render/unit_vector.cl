@@ -1,0 +1,11 @@
+/* A vector scaled to unit length, for vectors known to be far from zero and from overflow
+ * (sums of unit vectors, cross products of non-parallel ones): OpenCL's normalize() guards
+ * against both, and its guards cost PoCL more than the shading of a hemisphere sample. */
+#ifndef RADCL_RENDER_UNIT_VECTOR_CL
+#define RADCL_RENDER_UNIT_VECTOR_CL
+
+static inline float3 rc_unit(float3 v) {
+  return v * rsqrt(dot(v, v));
+}
+
+#endif
