@@ -124,11 +124,13 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
                  r->ambient_depth + 1u);
     }
   float budget = (float)P->as * wt + 0.5f;
-  if (o->write && P->as > 0u && o->nspawn - start == ns * ns && ns * ns > 49u &&
-      ns * ns <= 65536u && budget >= 9.0f) {
+  if (P->as > 0u && o->nspawn - start == ns * ns && ns * ns > 49u && ns * ns <= 65536u &&
+      budget >= 9.0f) {
+    o->cells = 1u;
     uint b = min((uint)budget, RC_CELL_MAX_BUDGET);
-    for (uint k = 0; k < ns * ns; ++k)
-      o->spawned[start + k].cell = RC_CELL_FLAG | (which << 29) | (b << 16) | k;
+    if (o->write)
+      for (uint k = 0; k < ns * ns; ++k)
+        o->spawned[start + k].cell = RC_CELL_FLAG | (which << 29) | (b << 16) | k;
   }
   return (float3)(0.0f);
 }

@@ -24,6 +24,8 @@ typedef struct rc_out {
    * ray ([0] = which, then ns * ns counts); only those samples are written. Else null. */
   global const uint* super;
   uint nhemi;   /* hemispheres sampled so far by this ray */
+  uint cells;   /* whether it marked a hemisphere's samples for the host's -as tally (rc_ray.cell),
+                   written or not: the host reads only such rays' children */
   uint child;   /* sample number of the next child (keys its random numbers) */
   float3 pcol;  /* patterns' colour at the hit (Radiance's r->pcol) */
   float3 pert;  /* textures' normal perturbation at the hit (r->pert), world space */
@@ -59,6 +61,7 @@ static inline void rc_out_init(rc_out* o, int write) {
   o->ng = (float3)(0.0f);
   o->doomed = 0;
   o->nhemi = 0;
+  o->cells = 0;
   o->child = 0;
   o->pcol = (float3)(1.0f);
   o->pert = (float3)(0.0f);

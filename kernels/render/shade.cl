@@ -215,13 +215,18 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
  * a count. Slot mode: every ray has room for cap_shadow and cap_spawn records; the counts
  * are written for every ray, with the top bit of nshadow set where the records did not fit.
  * Count mode (caps of 0): only the counts are written, nothing else (a wave's slot sizes, the
- * -as pass's exact room). One kernel does all three, so its code is compiled once. */
+ * -as pass's exact room). One kernel does all three, so its code is compiled once. Slot mode
+ * also writes cells[i]: whether ray i marked hemisphere samples for the -as tally (even where
+ * its records did not fit). With retally, ray i's tally is tallies[i] (the device's copy of a
+ * generation has the tallies its kernel gave; the host's -as tally has changed some since), so
+ * its children carry the right one. */
 kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint n, RC_SCENE_PARAMS,
                      global const uint* shadow_offset, global const uint* spawn_offset,
                      global rc_shadow* shadows, global rc_ray* spawned, global float4* immediate,
                      uint super_mode, global const uint* super_offset,
                      global const uint* super_data, uint cap_shadow, uint cap_spawn,
-                     global uint* nshadow, global uint* nspawn) {
+                     global uint* nshadow, global uint* nspawn, global uchar* cells,
+                     uint retally, global const uint* tallies) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
@@ -236,7 +241,9 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
     o.shadows = shadows + (slots ? (ulong)i * cap_shadow : shadow_offset[i]);
     o.spawned = spawned + (slots ? (ulong)i * cap_spawn : spawn_offset[i]);
   }
-  rc_shade_ray(&S, &o, rays[i], hits[i]);
+  rc_ray ray = rays[i];
+  if (retally) ray.tally = tallies[i];
+  rc_shade_ray(&S, &o, ray, hits[i]);
   if (counting) {
     nshadow[i] = o.nshadow;
     nspawn[i] = o.nspawn;
@@ -246,6 +253,7 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
   if (slots) {
     nshadow[i] = o.nshadow | (o.write ? 0u : 0x80000000u);
     nspawn[i] = o.nspawn;
+    cells[i] = (uchar)o.cells;
   }
 }
 

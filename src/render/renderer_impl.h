@@ -173,6 +173,8 @@ struct Renderer::Impl {
     device::Buffer *super_off = nullptr, *super_data = nullptr;
     std::uint32_t cap_shadow = ~0u, cap_spawn = ~0u;
     device::Buffer *nshadow = nullptr, *nspawn = nullptr; // counts out (default: the offsets)
+    device::Buffer* cells = nullptr;   // slot mode: which rays marked -as hemisphere samples
+    device::Buffer* tallies = nullptr; // each ray's tally, where the rays' own are stale
   };
   void run_shade(const ShadeLaunch& l, std::size_t n);
   // rc_shade in count mode (caps of 0): each ray's shadow and child counts only; with super
@@ -224,7 +226,8 @@ struct Renderer::Impl {
     std::vector<std::uint32_t> shadow_off, spawn_off, nsp, over;
     std::vector<char> later;
     std::vector<rc_shadow> shadows, requested;
-    std::vector<std::uint8_t> blocked;
+    std::vector<std::uint8_t> blocked, cells;
+    std::vector<std::uint32_t> tallies;
     std::vector<rc_float4> total;
     HostQueue<rc_ray> fused_children; // a fused slice's packed children, read whole
   } shade_scratch;

@@ -41,6 +41,8 @@ enum ScratchSlot {
   kShadowSlots,
   kSpawnSlots,
   kTotals,
+  kCells,
+  kTallies,
   kScratchSlots
 };
 

@@ -41,7 +41,10 @@ void Renderer::Impl::run_shade(const ShadeLaunch& l, std::size_t n) {
       .arg(kSceneArgs + 11, l.cap_shadow)
       .arg(kSceneArgs + 12, l.cap_spawn)
       .arg(kSceneArgs + 13, l.nshadow ? *l.nshadow : *l.shadow_off)
-      .arg(kSceneArgs + 14, l.nspawn ? *l.nspawn : *l.spawn_off);
+      .arg(kSceneArgs + 14, l.nspawn ? *l.nspawn : *l.spawn_off)
+      .arg(kSceneArgs + 15, l.cells ? *l.cells : *l.spawn_off)
+      .arg(kSceneArgs + 16, std::uint32_t{l.tallies ? 1u : 0u})
+      .arg(kSceneArgs + 17, l.tallies ? *l.tallies : *l.spawn_off);
   ctx.run(shade, n);
 }
 
@@ -192,6 +195,18 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
                 &bimm};
   l.cap_shadow = csh;
   l.cap_spawn = csp;
+  device::Buffer& bcells = scratch(kCells, n);
+  l.cells = &bcells;
+  // Rays from the device's copy carry the tallies the kernel gave them; the -as tally has
+  // changed some since (its hemispheres' samples). The kernel takes the host's, so the children
+  // come with the right ones and the tally need not write every child's.
+  const bool tally_slice = tree && !throwaway && settings.trace == RenderSettings::Trace::Off;
+  const bool retally = from_mirror && tally_slice;
+  if (retally) {
+    shade_scratch.tallies.resize(n);
+    for_rows(n, [&](std::size_t i) { shade_scratch.tallies[i] = rays[i].tally; });
+    l.tallies = &scratch(kTallies, shade_scratch.tallies);
+  }
   const auto w0 = std::chrono::steady_clock::now();
   run_shade(l, n);
   std::chrono::steady_clock::time_point w1;
@@ -235,6 +250,8 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   spawn_off.resize(n);
   bnshadow.read_later(shadow_off.data(), n * 4);
   bnspawn.read_later(spawn_off.data(), n * 4);
+  x.cells.resize(n);
+  bcells.read_later(x.cells.data(), n);
   // Where the host reads the slots in place (PoCL) it packs them; elsewhere rc_pack packs them
   // on the device and only the records are read back (the slots are mostly room).
   const rc_ray* ssp =
@@ -308,8 +325,6 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     reshade(rays, hit, over, nsp, shadow_off, spawn_off, bsh, children, into, first_child);
     if (!into) mirror.upload(children, first_child, nspawn);
   }
-  // The tally's own pass over the children sets their tally below, where it runs.
-  const bool tally_slice = tree && !throwaway && settings.trace == RenderSettings::Trace::Off;
   if (from_mirror && tree && !tally_slice)
     for_rows(n, [&](std::size_t i) {
       for (std::uint32_t k = 0; k < nsp[i]; ++k)
@@ -360,8 +375,8 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     ~MarkAtEnd() { c.mark(PhaseProfile::StepSumsTally); }
   } mark_at_end{clock};
   if (tree && settings.trace == RenderSettings::Trace::Off) {
-    tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(), n,
-                       from_mirror);
+    tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(),
+                       x.cells.data(), n);
     set_misses_aside(next, first_child);
     return;
   }

@@ -157,14 +157,10 @@ void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& to
 
 void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
                              rc_ray* children, const std::uint32_t* off, const std::uint32_t* count,
-                             std::size_t n, bool parent_tally) {
+                             const std::uint8_t* cells, std::size_t n) {
   if (trace_) {
-    for (std::size_t i = 0; i < n; ++i) {
-      if (parent_tally)
-        for (std::uint32_t k = 0; k < count[i]; ++k)
-          children[off[i] + k].tally = rays[i].tally;
+    for (std::size_t i = 0; i < n; ++i)
       shaded(rays[i], hits[i], totals[i], children + off[i], count[i]);
-    }
     return;
   }
   std::optional<PhaseProfile::StepClock> clock;
@@ -183,10 +179,17 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
       if (i > 0 && rays[i].primary < rays[i - 1].primary)
         unordered.store(true, std::memory_order_relaxed);
       std::uint32_t nodes = 0, hemis = 0, plain = 0;
+      // A ray the kernel says marked no hemisphere has plain children only: they need not be
+      // read (most of a deep generation's rows).
+      if (cells && !cells[i]) {
+        new_nodes_[i] = 0;
+        new_hemis_[i] = 0;
+        plain_[i] = count[i];
+        continue;
+      }
       for (std::size_t k = 0; k < count[i];) {
         const std::size_t m = run_length(children + off[i], k, count[i]);
         if (m == 0) {
-          if (parent_tally) children[off[i] + k].tally = rays[i].tally; // a hemisphere's: below
           ++plain;
           ++k;
         } else {

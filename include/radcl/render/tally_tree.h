@@ -64,12 +64,11 @@ public:
   // The same for rays [0, n) of a slice, in order, outside trace mode: ray i's children are
   // children[off[i], off[i] + count[i]). The hemispheres' nodes are made on every core (their
   // places follow from counts, so they are those the serial order gives); sums and settling
-  // stay in ray order. `parent_tally`: the children's tally fields are stale (the device's
-  // copy of the rays made them) and are set from their parents' on the way, as the kernel
-  // would have: one pass over the children rather than two.
+  // stay in ray order. `cells` (null: unknown) says which rays marked hemisphere samples (the
+  // kernel's rc_ray.cell): the others' children are plain and are not read.
   void shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
                     rc_ray* children, const std::uint32_t* off, const std::uint32_t* count,
-                    std::size_t n, bool parent_tally = false);
+                    const std::uint8_t* cells, std::size_t n);
 
   // Super-sample children of request `r` (their cell field names the division).
   void supersampled(const SuperRequest& r, rc_ray* children, std::size_t nchildren);
