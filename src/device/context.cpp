@@ -178,8 +178,15 @@ void Context::release_pinned() {
 
 void Context::run(Kernel& kernel, std::size_t items, std::size_t group) {
   if (items == 0) return;
-  if (group == 0) group = kernel.preferred_group_size();
-  if (group == 0) group = 1;
+  if (group == 0) {
+    group = std::max<std::size_t>(1, kernel.preferred_group_size());
+    // On a CPU a group is one core's loop over its items: a wave too small to give each core a
+    // few groups gets smaller ones (a batch's 29 primaries, each sampling a hemisphere of 1,024
+    // rays, in one group of 128 kept one core busy and the others idle).
+    if (info_.kind == DeviceKind::CPU)
+      while (group > 1 && (items + group - 1) / group < 4 * std::size_t{info_.compute_units})
+        group /= 2;
+  }
   std::size_t global = (items + group - 1) / group * group;
   RADCL_CL(clEnqueueNDRangeKernel(queue_, kernel.handle(), 1, nullptr, &global, &group, 0, nullptr,
                                   nullptr));
