@@ -1,6 +1,6 @@
 /* A vector scaled to unit length, for vectors known to be far from zero and from overflow
  * (sums of unit vectors, cross products of non-parallel ones): OpenCL's normalize() guards
- * against both, and its guards cost PoCL more than the shading of a hemisphere sample. */
+ * against both, which costs PoCL range checks besides its square root and division. */
 #ifndef RADCL_RENDER_UNIT_VECTOR_CL
 #define RADCL_RENDER_UNIT_VECTOR_CL
 

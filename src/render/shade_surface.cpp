@@ -250,8 +250,8 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   spawn_off.resize(n);
   bnshadow.read_later(shadow_off.data(), n * 4);
   bnspawn.read_later(spawn_off.data(), n * 4);
-  x.cells.resize(n);
-  bcells.read_later(x.cells.data(), n);
+  x.cells.resize(tally_slice ? n : 0); // only the -as tally reads them
+  if (tally_slice) bcells.read_later(x.cells.data(), n);
   // Where the host reads the slots in place (PoCL) it packs them; elsewhere rc_pack packs them
   // on the device and only the records are read back (the slots are mostly room).
   const rc_ray* ssp =
@@ -374,7 +374,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     PhaseProfile::StepClock& c;
     ~MarkAtEnd() { c.mark(PhaseProfile::StepSumsTally); }
   } mark_at_end{clock};
-  if (tree && settings.trace == RenderSettings::Trace::Off) {
+  if (tally_slice) {
     tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(),
                        x.cells.data(), n);
     set_misses_aside(next, first_child);
