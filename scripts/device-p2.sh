@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Device-side study of the no-cache case (peers P2): the phases of radcl's run on the GPU and on
-# PoCL over every core, with chunk and generation sizes varied, and Embree's own rate on its rays.
+# PoCL over every core, with chunk and generation sizes varied (P2_VARIANTS on the GPU,
+# P2_POCL_VARIANTS on PoCL: lists of NAME=value settings, "base" for none), and Embree's own
+# rate on its rays.
 # Run by scripts/device-run.sh sh (DEVICE_SH='bash scripts/device-p2.sh').
 set -uo pipefail
 scenes=$RADCL_TEST_DATA/scenes
@@ -24,6 +26,11 @@ for v in ${P2_VARIANTS:-"base" "RADCL_CHUNK_RAYS=1048576" "RADCL_GENERATION_RAYS
   if [ "$v" = base ]; then one "gpu $v" RADCL_DEVICE=nvidia 2>&1; else one "gpu $v" RADCL_DEVICE=nvidia "$v" 2>&1; fi
 done
 one "gpu waves" RADCL_DEVICE=nvidia RADCL_PROFILE=waves 2>&1 | tail -25
-one "pocl" RADCL_DEVICE=pocl 2>&1
+# PoCL over every core: its generations default to 2^18 rays (a batch of about 29 of these
+# primaries), which may leave many cores idle at each batch's first generations and its last.
+one "pocl warm" RADCL_DEVICE=pocl 2>&1 | tail -1
+for v in ${P2_POCL_VARIANTS:-"base" "RADCL_GENERATION_RAYS=1048576" "RADCL_GENERATION_RAYS=4194304"}; do
+  if [ "$v" = base ]; then one "pocl $v" RADCL_DEVICE=pocl 2>&1; else one "pocl $v" RADCL_DEVICE=pocl "$v" 2>&1; fi
+done
 echo "== embree"
 (cd "$scenes" && "$RADCL_BIN/bench_embree_rays" office_clear.oct office_grid.pts 2>&1 | tail -20)
