@@ -22,15 +22,18 @@ one() { # label, env..., then runs radcl rtrace on the P2 points
     "$RADCL_BIN/rtrace" -n "$(nproc)" -h -u- -I+ $opts office_clear.oct < "$w/p2all.pts" > /dev/null)
 }
 one warm RADCL_DEVICE=nvidia 2>&1 | tail -1
-for v in ${P2_VARIANTS:-"base" "RADCL_CHUNK_RAYS=1048576" "RADCL_GENERATION_RAYS=16777216" "RADCL_NO_OVERLAP=1"}; do
-  if [ "$v" = base ]; then one "gpu $v" RADCL_DEVICE=nvidia 2>&1; else one "gpu $v" RADCL_DEVICE=nvidia "$v" 2>&1; fi
-done
+variants() { # device label settings...: one run per setting ("base": none)
+  local dev=$1 label=$2 v
+  shift 2
+  for v in "$@"; do
+    if [ "$v" = base ]; then one "$label $v" RADCL_DEVICE=$dev 2>&1; else one "$label $v" RADCL_DEVICE=$dev "$v" 2>&1; fi
+  done
+}
+variants nvidia gpu ${P2_VARIANTS:-"base" "RADCL_CHUNK_RAYS=1048576" "RADCL_GENERATION_RAYS=16777216" "RADCL_NO_OVERLAP=1"}
 one "gpu waves" RADCL_DEVICE=nvidia RADCL_PROFILE=waves 2>&1 | tail -25
 # PoCL over every core: its generations default to 2^18 rays (a batch of about 29 of these
 # primaries), which may leave many cores idle at each batch's first generations and its last.
 one "pocl warm" RADCL_DEVICE=pocl 2>&1 | tail -1
-for v in ${P2_POCL_VARIANTS:-"base" "RADCL_GENERATION_RAYS=1048576" "RADCL_GENERATION_RAYS=4194304"}; do
-  if [ "$v" = base ]; then one "pocl $v" RADCL_DEVICE=pocl 2>&1; else one "pocl $v" RADCL_DEVICE=pocl "$v" 2>&1; fi
-done
+variants pocl pocl ${P2_POCL_VARIANTS:-"base" "RADCL_GENERATION_RAYS=1048576" "RADCL_GENERATION_RAYS=4194304"}
 echo "== embree"
 (cd "$scenes" && "$RADCL_BIN/bench_embree_rays" office_clear.oct office_grid.pts 2>&1 | tail -20)
