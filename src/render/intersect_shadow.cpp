@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <numeric>
+#include <string_view>
 
 #include "pipeline_util.h"
 #include "renderer_impl.h"
@@ -13,6 +15,47 @@ namespace radcl::render {
 
 using namespace ambient;
 using namespace pipeline;
+
+void Renderer::Impl::note_shadow_blockers(const CompiledSources& so) {
+  shadow_blockers.clear();
+  shadow_misses_reach = false;
+  if (const char* e = std::getenv("RADCL_SHADOW_ON_HOST"); e && std::string_view(e) == "0")
+    return; // every ray stepped on the device (the tests' reference)
+  for (const rc_source& src : so.sources)
+    if (src.flags & RC_SRCF_VIRTUAL) return;
+  // A miss reaches a distant source unchanged where no ray travels in a medium (nothing to
+  // lose on the way) and none is bent (by a dielectric) away from where it was aimed.
+  const device::FeatureSet& f = cs.features;
+  shadow_misses_reach = !has_medium(settings) && !f.has(RC_OBJ_MIST) && !f.has(RC_OBJ_DIELECTRIC) &&
+                        !f.has(RC_OBJ_INTERFACE) &&
+                        std::all_of(so.sources.begin(), so.sources.end(), [](const rc_source& src) {
+                          return src.kind == RC_SRC_DISTANT;
+                        });
+  // Only materials rc_shadow_at passes to its last case; emitters are left to the step (one
+  // may be the source aimed at) and so is every other kind.
+  auto blocks = [](std::uint32_t type) {
+    switch (type) {
+    case RC_OBJ_PLASTIC:
+    case RC_OBJ_METAL:
+    case RC_OBJ_PLASTIC2:
+    case RC_OBJ_METAL2:
+    case RC_OBJ_ASHIK2:
+    case RC_OBJ_PLASFUNC:
+    case RC_OBJ_METFUNC:
+    case RC_OBJ_PLASDATA:
+    case RC_OBJ_METDATA:
+      return true;
+    default:
+      return false;
+    }
+  };
+  shadow_blockers.resize(cs.surfaces.size());
+  for (std::size_t i = 0; i < cs.surfaces.size(); ++i) {
+    const rc_surface& f = cs.surfaces[i];
+    shadow_blockers[i] = f.material != RC_NONE && f.clip == 0 && f.source == RC_NONE &&
+                         blocks(cs.materials[f.material].type);
+  }
+}
 
 const Renderer::Impl::ShadowView* Renderer::Impl::view_shadows_later(device::Buffer& shadows,
                                                                      std::size_t n) {
@@ -79,6 +122,11 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     HitQueue& hits = shadow_hits;
     if (hits.capacity() < kShadowChunk) hits.reserve(kShadowChunk); // pinned room is costly to take
     hits.resize(m);
+    // Rays whose hit blocks them outright stay blocked with no step (shadow_blockers); misses
+    // may reach their sources with none (shadow_misses_reach).
+    const bool decide = !shadow_blockers.empty();
+    std::vector<std::uint8_t>& decided = shadow_decided;
+    if (decide) decided.resize(m);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const auto& range) {
       constexpr std::size_t kBlock = 16; // to Embree in packets
       std::array<geometry::Ray, kBlock> ray;
@@ -94,11 +142,46 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
           ray[k].tmax = std::isfinite(s.dir.w) ? s.dir.w * 1.001 + 1e-3 : 1e300;
         }
         geom.intersect_block(ray.data(), b, h.data());
-        for (std::size_t k = 0; k < b; ++k)
+        for (std::size_t k = 0; k < b; ++k) {
+          if (decide) { // a decided ray's record is never read
+            std::uint8_t& d = decided[a + k];
+            if (h[k]) {
+              const std::uint32_t f = cs.surface_of(*h[k]);
+              d = f < shadow_blockers.size() ? shadow_blockers[f] : 0;
+            } else {
+              d = shadow_misses_reach ? 2 : 0;
+            }
+            if (d) continue;
+          }
           to_device(ray[k], h[k], hits[a + k]);
+        }
       }
     });
     stats.shadow += m;
+    if (decide) { // the rest, packed in order
+      std::size_t k = 0;
+      bool reached = false;
+      for (std::size_t i = 0; i < m; ++i) {
+        if (decided[i] == 2) {
+          blocked[slot[i]] = 0;
+          reached = true;
+        }
+        if (decided[i]) continue;
+        if (k != i) {
+          hits[k] = hits[i];
+          slot[k] = slot[i];
+          state[k] = state[i];
+        }
+        ++k;
+      }
+      m = k;
+      hits.resize(m);
+      slot.resize(m);
+      state.resize(m);
+      // In queue order before the step and the sums that read them.
+      if (reached) scratch(kBlocked, std::size_t{0}).write(blocked + first, n, first);
+      if (m == 0) break;
+    }
     timed.start(Phase::ShadowStep);
     PhaseProfile::StepClock clock(prof);
 

@@ -119,6 +119,7 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
 }
 
 void Renderer::Impl::upload_sources() {
+  note_shadow_blockers(cs.sources);
   sources = upload(ctx, cs.sources.sources);
   verts = upload(ctx, cs.sources.verts);
   mirrors = upload(ctx, cs.sources.mirrors);
@@ -126,6 +127,7 @@ void Renderer::Impl::upload_sources() {
 
 std::vector<float> Renderer::Impl::pretest(const CompiledSources& so,
                                            const std::vector<rc_shadow>& rays) {
+  note_shadow_blockers(so);
   sources = upload(ctx, so.sources);
   verts = upload(ctx, so.verts);
   mirrors = upload(ctx, so.mirrors);

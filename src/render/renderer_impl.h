@@ -268,6 +268,12 @@ struct Renderer::Impl {
   static constexpr std::size_t kShadowChunk = std::size_t{1} << 18; // requests traced at once
   std::vector<char> peek_view, peek_view_step;
   std::vector<std::uint32_t> shadow_state, shadow_slot;
+  // Surfaces a shadow ray that meets them is blocked by, whatever it carries (rc_shadow_at's
+  // last case: plastic, metal and their kin, no antimatter clipping them): decided on the
+  // host, without a step. Empty while a source is virtual (its rays must meet the mirror).
+  std::vector<std::uint8_t> shadow_blockers, shadow_decided;
+  bool shadow_misses_reach = false;
+  void note_shadow_blockers(const CompiledSources& so);
 
   // ---- The irradiance cache's passes (cache_passes.cpp; docs/cache-internals.md) ----
   // How a primary starts when it is a hemisphere sample of a record being made.

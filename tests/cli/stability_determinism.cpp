@@ -174,6 +174,21 @@ TEST(StabilityDeterminism, SameWhateverTheGenerationSize) {
   EXPECT_TRUE(output("RADCL_GENERATION_RAYS=4194304 " + cmd) == base);
 }
 
+// Shadow rays that meet an opaque surface, or (where every source is distant and nothing bends
+// or dims a ray) meet nothing, are decided on the host without the device's step: the same
+// bits as stepping every one (RADCL_SHADOW_ON_HOST=0), with glass, metal and a sun (office),
+// and with local sources, a spotlight and an illum over glass (luminaires).
+TEST(StabilityDeterminism, ShadowRaysDecidedOnTheHostAsOnTheDevice) {
+  for (std::string cmd : {"rtrace -h -I -u- -fad -ab 1 -aa 0 -ad 256 -n 2 office_clear.oct "
+                          "< office_grid.pts",
+                          "rtrace -h -I -u- -fad -ab 1 -aa 0 -ad 256 -n 2 luminaires.oct "
+                          "< luminaires_grid.pts"}) {
+    std::string base = output(cmd);
+    EXPECT_GT(base.size(), 0u) << cmd;
+    EXPECT_TRUE(output("RADCL_SHADOW_ON_HOST=0 " + cmd) == base) << cmd;
+  }
+}
+
 // rtrace and rpict run themselves again with glibc's huge-page tunable (util/allocator.h); the
 // rays they were piped are all still read, and the output is the same with it off, or with
 // other tunables the user set (kept alongside).
