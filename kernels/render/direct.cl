@@ -206,7 +206,9 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m,
     rc_source_parts(src, p, cells, &parts);
     for (uint k = 0; k < cells; ++k, dim += 2) {
       rc_src_cell g = rc_src_parts_next(&parts);
-      float2 xi = rc_sample2(P, key, dim);
+      /* A distant source without jitter is aimed at its centre: no numbers to draw. */
+      float2 xi = (P->direct.y > 0.0f || src->kind != RC_SRC_DISTANT) ? rc_sample2(P, key, dim)
+                                                                      : (float2)(0.0f);
       float3 l;
       float dist, omega;
       if (!rc_source_sample_part(src, S->verts, p, hn, g, cells, P->direct.y, xi, &l, &dist,
