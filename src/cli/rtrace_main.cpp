@@ -158,11 +158,12 @@ public:
     const render::RenderStats& s = renderer_->stats();
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::fprintf(stderr,
-                 "rtrace: %llu primary, %llu secondary, %llu shadow rays in %.3f s "
-                 "(%.0f rays/s)\n",
+                 "rtrace: %llu primary, %llu secondary, %llu shadow rays (%llu stepped on the "
+                 "device) in %.3f s (%.0f rays/s)\n",
                  static_cast<unsigned long long>(s.primary),
                  static_cast<unsigned long long>(s.secondary),
-                 static_cast<unsigned long long>(s.shadow), secs, s.total() / secs);
+                 static_cast<unsigned long long>(s.shadow),
+                 static_cast<unsigned long long>(s.shadow_steps), secs, s.total() / secs);
   }
 
 private:

@@ -182,6 +182,7 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
       if (reached) scratch(kBlocked, std::size_t{0}).write(blocked + first, n, first);
       if (m == 0) break;
     }
+    stats.shadow_steps += m;
     timed.start(Phase::ShadowStep);
     PhaseProfile::StepClock clock(prof);
 

@@ -110,12 +110,13 @@ struct PrimaryResult {
 
 // Rays traced so far (what Embree was asked), for reports and benchmarks.
 struct RenderStats {
-  std::uint64_t primary = 0;    // first-wave rays (not counted for -I meters)
-  std::uint64_t secondary = 0;  // reflected, transmitted, specular and ambient rays
-  std::uint64_t shadow = 0;     // shadow-ray segments (one per surface passed)
-  std::uint64_t records = 0;    // irradiance-cache records made
-  std::uint64_t leak_tests = 0; // cache records' leak-test rays (Radiance's plugaleak)
-  std::uint64_t leaks = 0;      // hits at which some record's test ray was blocked
+  std::uint64_t primary = 0;      // first-wave rays (not counted for -I meters)
+  std::uint64_t secondary = 0;    // reflected, transmitted, specular and ambient rays
+  std::uint64_t shadow = 0;       // shadow-ray segments (one per surface passed)
+  std::uint64_t shadow_steps = 0; // of those, the ones the device stepped (others: the host)
+  std::uint64_t records = 0;      // irradiance-cache records made
+  std::uint64_t leak_tests = 0;   // cache records' leak-test rays (Radiance's plugaleak)
+  std::uint64_t leaks = 0;        // hits at which some record's test ray was blocked
   std::uint64_t total() const { return primary + secondary + shadow; }
 };
 
