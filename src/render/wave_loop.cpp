@@ -24,10 +24,15 @@ std::size_t Renderer::Impl::chunk_rays() const {
 std::size_t Renderer::Impl::generation_rays() const {
   if (const char* e = std::getenv("RADCL_GENERATION_RAYS"); e && *e)
     return std::max<std::size_t>(1, std::strtoull(e, nullptr, 10));
-  // On PoCL 2^18: each generation's queues are memory paged in once per process, at a cost the
-  // run does not amortise (1,980 sensors at -aa 0 -ad 1024 on 2 cores: 3.9-4.3 s against
-  // 4.0-5.0 s with 2^19, 100 huge-page faults instead of 150).
-  return ctx.zero_copy() ? std::size_t{1} << 18 : std::size_t{1} << 22;
+  if (!ctx.zero_copy()) return std::size_t{1} << 22;
+  // On PoCL 2^18 with few cores: each generation's queues are memory paged in once per
+  // process, at a cost the run does not amortise (1,980 sensors at -aa 0 -ad 1024 on 2 cores:
+  // 3.9-4.3 s against 4.0-5.0 s with 2^19, 100 huge-page faults instead of 150). With many,
+  // a batch of 2^18 rays' primaries (about 50 at -ab 2 -ad 1024) leaves most cores idle in its
+  // first generations: 10,000 such sensors on 16 cores took 4.7-5.0 s, 3.8-4.1 s with 2^22.
+  // The cache's passes make small generations; they keep the size they were measured with.
+  if (uses_cache(settings) || ctx.info().compute_units < 8) return std::size_t{1} << 18;
+  return std::size_t{1} << 22;
 }
 
 void Renderer::Impl::run(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results) {
