@@ -200,6 +200,31 @@ void Context::finish() {
   drained();
 }
 
+Context::Mark Context::mark() {
+  Mark m;
+  cl_event e = nullptr;
+  RADCL_CL(clEnqueueMarkerWithWaitList(queue_, 0, nullptr, &e));
+  m.event = e;
+  m.copies = copy_back_.size();
+  return m;
+}
+
+void Context::wait_for(Mark& m) {
+  if (!m.event) return;
+  cl_event e = static_cast<cl_event>(m.event);
+  m.event = nullptr;
+  clFlush(queue_); // the commands after the mark start too
+  const cl_int st = clWaitForEvents(1, &e);
+  clReleaseEvent(e);
+  RADCL_CL(st);
+  note_wait();
+  // The reads before the mark have landed in their pinned room: to their destinations.
+  const std::size_t k = std::min(m.copies, copy_back_.size());
+  for (std::size_t i = 0; i < k; ++i)
+    parallel_copy(copy_back_[i].to, copy_back_[i].from, copy_back_[i].bytes);
+  copy_back_.erase(copy_back_.begin(), copy_back_.begin() + static_cast<std::ptrdiff_t>(k));
+}
+
 const void* Context::stage(const void* src, std::size_t bytes) {
   if (void* p = pinned(bytes)) {
     parallel_copy(p, src, bytes);

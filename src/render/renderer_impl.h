@@ -11,6 +11,8 @@
 //   renderer.cpp           set-up, light sources and the public interface
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -23,6 +25,7 @@
 #include <vector>
 
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include "generation_mirror.h"
 #include "radcl/ambient/cache.h"
@@ -202,6 +205,12 @@ struct Renderer::Impl {
     const char* e = std::getenv("RADCL_FEWER_WAITS");
     return !(e && std::string(e) == "0");
   }();
+  // On a GPU a slice's children are read back while the host traces its shadow rays
+  // (RADCL_CHILDREN_LATER=0: in the same wait as the shadow views, before the tracing).
+  const bool children_later_on = [] {
+    const char* e = std::getenv("RADCL_CHILDREN_LATER");
+    return !(e && std::string(e) == "0");
+  }();
   std::vector<char> peek_sh, peek_sp; // host copies of the slots where the device is not the host
   // Slot sizes for a chunk: the counts of an even spread of its rays (at most 512 of them,
   // counted by rc_shade's count mode), enough room for about 98% of them.
@@ -231,6 +240,33 @@ struct Renderer::Impl {
     std::vector<rc_float4> total;
     HostQueue<rc_ray> fused_children; // a fused slice's packed children, read whole
   } shade_scratch;
+  // The -as tally tree fed beside the shading: a slice's tally is a task (in ahead_arena) that
+  // runs while the next slice is shaded, one at a time and in slice order, so the sums are
+  // those of the serial order. It reads the slice's rays (the generation's queue, unchanged
+  // until the generation ends), its hits (the wave loop keeps them from being traced over),
+  // and its children in `next` (not moved while it runs); the per-ray vectors it reads are
+  // swapped out of shade_scratch into tally_in. Only on a device apart from the host: PoCL's
+  // kernels keep every core busy, and there the task only slowed the shading (office, 2,000
+  // sensors at -aa 0 -ad 1024 on 2 cores: 2.93 s against 2.77 s). RADCL_TALLY_BESIDE=1 or 0
+  // says otherwise; RADCL_PROFILE=waves, which times the tally's steps, feeds it in line.
+  struct TallyInputs {
+    std::vector<std::uint32_t> spawn_off, nsp;
+    std::vector<std::uint8_t> cells;
+    std::vector<rc_float4> total;
+  } tally_in;
+  tbb::task_group tally_task;
+  bool tally_pending = false;
+  std::span<const rc_hit> tally_hits; // what the pending tally reads
+  const int tally_beside_env = [] {   // -1: the device decides
+    const char* e = std::getenv("RADCL_TALLY_BESIDE");
+    return e && *e ? (std::string(e) == "0" ? 0 : 1) : -1;
+  }();
+  // The slice [rays, rays + n) shaded: its totals, children counts and offsets, and hemisphere
+  // marks are those in shade_scratch.
+  void feed_tally(const rc_ray* rays, const rc_hit* hit, rc_ray* children, std::size_t n);
+  void wait_tally();
+  // Whether the pending tally reads hits in `h`'s room.
+  bool tally_reads(const HitQueue& h) const;
 
   // ---- Shadow rays (intersect_shadow.cpp) ----
   // Shadow rays in steps: Embree finds each one's next hit, the kernel decides whether it

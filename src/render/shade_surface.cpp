@@ -278,6 +278,8 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
   // The children go straight to the next generation's queue; a thrown-away pass wants only
   // them (they may miss too). The shadow requests are packed on the device and stay there.
   const std::size_t first_child = next.size();
+  // The pending tally writes into children already in `next`: they must not move.
+  if (first_child + nspawn > next.capacity()) wait_tally();
   next.resize(first_child + nspawn);
   rc_ray* children = next.data() + first_child;
   // Packed already (then the device's offsets are the host's: no ray was over its room)?
@@ -306,9 +308,19 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
       // Rays shaded again below write their children straight into the device's copy of the
       // next generation, read from there whole.
       into = over.empty() ? nullptr : mirror.next_rows(first_child, nspawn);
+      // The children cross while the host traces the shadow rays: only what comes before them
+      // (the shadow views) is waited for here, where the host reads no child before the sums'
+      // wait (no ray shaded again, no tally written into them below, no record request).
+      const bool children_later = children_later_on && !into && !throwaway && !collecting &&
+                                  !(from_mirror && tree && !tally_slice);
+      device::Context::Mark before_children;
+      if (children_later) before_children = ctx.mark();
       if (nspawn && !into) bsp.read_later(children, std::size_t{nspawn} * sizeof(rc_ray));
       mirror.append(bsp, first_child, nspawn);
-      ctx.finish();
+      if (children_later)
+        ctx.wait_for(before_children);
+      else
+        ctx.finish();
     } else {
       if (view) ctx.finish();
       std::vector<char>& later = x.later; // shaded again below
@@ -375,8 +387,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     ~MarkAtEnd() { c.mark(PhaseProfile::StepSumsTally); }
   } mark_at_end{clock};
   if (tally_slice) {
-    tally.shaded_slice(rays, hit, total.data(), children, spawn_off.data(), nsp.data(),
-                       x.cells.data(), n);
+    feed_tally(rays, hit, children, n);
     set_misses_aside(next, first_child);
     return;
   }

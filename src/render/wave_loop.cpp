@@ -160,12 +160,26 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   // device command stays on this thread.
   bool first_wave = true;
   RayQueue& next = next_hold.v;
-  Spare<HitQueue> ahead_hold(spare_hits, HitQueue(PinnedAlloc<rc_hit>(&ctx)));
-  HitQueue& ahead = ahead_hold.v;
+  // Three chunks' hits in turn: the one shaded, the next one traced beside it, and the last
+  // one, which the tally fed beside the shading (feed_tally) may still read.
+  Spare<HitQueue> ahead_hold(spare_hits, HitQueue(PinnedAlloc<rc_hit>(&ctx))),
+      behind_hold(spare_hits, HitQueue(PinnedAlloc<rc_hit>(&ctx)));
+  HitQueue &ahead = ahead_hold.v, &behind = behind_hold.v;
+  // Declared after what the tally reads, so that it is waited for before those go, however
+  // the batch ends.
+  struct TallyWait {
+    Impl& impl;
+    ~TallyWait() {
+      try {
+        impl.wait_tally();
+      } catch (...) { // the batch is ending on another error already
+      }
+    }
+  } tally_wait{*this};
   const std::size_t chunk = chunk_rays();
   const bool overlap = !std::getenv("RADCL_NO_OVERLAP");
   // A chunk's room at once: pinned memory is costly to take and give back.
-  for (HitQueue* h : {&hits, &ahead})
+  for (HitQueue* h : {&hits, &ahead, &behind})
     if (h->capacity() < chunk) h->reserve(chunk);
   mirror.start_batch();
   while (!queue.empty()) {
@@ -187,6 +201,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
       const std::span<const rc_ray> part = part_at(a);
       tbb::task_group tracing;
       const bool more = a + chunk < n;
+      if (more && tally_reads(ahead)) wait_tally();
       if (more && overlap)
         ahead_arena.execute([&] { tracing.run([&] { hits_at(a + chunk, ahead); }); });
       test_leaks(part, hits);
@@ -207,8 +222,10 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
       ahead_arena.execute([&] { tracing.wait(); });
       if (more && !overlap) hits_at(a + chunk, ahead);
       std::swap(hits, ahead);
+      std::swap(ahead, behind);
     }
     first_wave = false;
+    wait_tally();
     if (tree)
       for (auto req = tally.take_requests(); !req.empty(); req = tally.take_requests())
         supersample(req, next);

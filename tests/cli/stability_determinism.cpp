@@ -202,3 +202,24 @@ TEST(StabilityDeterminism, HugePagesDoNotChangeOutput) {
   std::string pict = "rpict -u- -vf office.vf -x 32 -y 32 -ab 1 -ad 64 -aa 0.2 office_clear.oct";
   EXPECT_TRUE(pixels(pict) == pixels("RADCL_HUGE_PAGES=0 " + pict));
 }
+
+// The -as tally fed beside the next slice's shading (on by default on a GPU), and children read
+// back beside the shadow rays' tracing, give the bits of doing each in line: small chunks and
+// slices, so that many slices' tallies overlap the shading and the hits rotate, and small
+// generations' room, so that the queue the pending tally writes into has to grow.
+TEST(StabilityDeterminism, TallyBesideTheShadingAsInLine) {
+  const std::string cmd = "rtrace -h -I -u- -fad -ab 2 -aa 0 -ad 64 -as 32 -n 2 office_clear.oct "
+                          "< office_grid.pts";
+  const std::string base = output("RADCL_TALLY_BESIDE=0 " + cmd);
+  EXPECT_EQ(base.size(), 77u * 3u * sizeof(double));
+  for (std::string env : {"RADCL_CHUNK_RAYS=512 RADCL_WAVE_BYTES=65536",
+                          "RADCL_CHUNK_RAYS=1024 RADCL_GENERATION_RAYS=2048", ""}) {
+    EXPECT_TRUE(output("RADCL_TALLY_BESIDE=1 " + env + " " + cmd) == base) << env;
+    EXPECT_TRUE(output("RADCL_TALLY_BESIDE=0 " + env + " " + cmd) == base) << env;
+  }
+  // The path a GPU takes (device buffers and transfers), where the tally goes beside by default
+  // and each slice's children are read back while its shadow rays are traced.
+  for (std::string env : {"", "RADCL_CHILDREN_LATER=0", "RADCL_TALLY_BESIDE=0",
+                          "RADCL_CHUNK_RAYS=512 RADCL_WAVE_BYTES=65536"})
+    EXPECT_TRUE(output("RADCL_DEVICE_MEMORY=separate " + env + " " + cmd) == base) << env;
+}

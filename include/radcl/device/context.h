@@ -41,6 +41,15 @@ public:
   // argument. group = 0 picks the kernel's preferred multiple.
   void run(Kernel& kernel, std::size_t items, std::size_t group = 0);
   void finish();
+  // A point in the queue: wait_for(mark()) waits for the commands enqueued before it only, and
+  // completes their reads (copy_when_drained); those after it go on. Staged copies and pinned
+  // room stay until the queue drains.
+  struct Mark {
+    void* event = nullptr; // cl_event
+    std::size_t copies = 0;
+  };
+  Mark mark();
+  void wait_for(Mark& m);
   // A copy of `bytes` at `src` that stays valid until the queue drains (finish, or a blocking
   // read): the source of a transfer enqueued without waiting.
   const void* stage(const void* src, std::size_t bytes);

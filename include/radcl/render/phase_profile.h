@@ -36,6 +36,7 @@ enum class Phase {
   Slots,       // a wave's slot sizes counted (rc_shade counting a sample of its rays)
   Batch,       // a wave's own host work: primaries set up, queues moved, results summed
   Build,       // device programs built (from source, or loaded from the program cache)
+  Tally,       // the -as tally tree fed a shaded slice, beside the next slice's shading
   kCount
 };
 
@@ -124,9 +125,9 @@ public:
   // The phases, then the profile's lifetime and what no phase timed (phases timed inside
   // another are counted twice there, so keep them apart).
   void print(std::FILE* f) const {
-    static const char* names[] = {"trace", "leaks",       "shade",  "shadow-trace", "shadow-step",
-                                  "accum", "choose",      "sample", "records",      "upload",
-                                  "super", "bookkeeping", "slots",  "batch",        "build"};
+    static const char* names[] = {
+        "trace",   "leaks",  "shade", "shadow-trace", "shadow-step", "accum", "choose", "sample",
+        "records", "upload", "super", "bookkeeping",  "slots",       "batch", "build",  "tally"};
     static_assert(std::size(names) == static_cast<std::size_t>(Phase::kCount));
     for (int i = 0; i < static_cast<int>(Phase::kCount); ++i)
       if (calls_[i])
