@@ -71,13 +71,35 @@ RC_RNG_INLINE float rc_random(rc_rng_key key, rc_u32 dim) {
 
 /* A low-discrepancy alternative over the primary index: the R2 sequence (Roberts' generalised
  * golden ratio, 2-D) in 32-bit fixed point, rotated per (sample, depth, seed, dimension).
- * Consecutive primaries (neighbouring pixels) fill [0,1)^2 evenly for each dimension pair. */
+ * Within each aligned block of 4096 primaries the points are dealt out in a scrambled order
+ * (a keyed bijection of the index's low 12 bits), so the block's set is still the sequence's
+ * evenly spread run of 4096 points, but pixels a scanline (or any fixed step) apart no longer
+ * sit a fixed step apart in the sequence: in raster order that step drew a lattice (issue 54).
+ * Like Radiance's -u-: stratified over the picture, uncorrelated from pixel to pixel. */
+RC_RNG_INLINE rc_u32 rc_ld_scramble(rc_u32 primary, rc_u32 key) {
+  const rc_u32 m = 0xFFFu;
+  rc_u32 k = key ^ ((primary >> 12) * 0x9E3779B9u);
+  k ^= k >> 15;
+  k *= 0x2C1B3C6Du;
+  k ^= k >> 12;
+  rc_u32 x = primary & m;
+  x = (x ^ k) & m;
+  x = (x * ((k >> 12) | 1u)) & m;
+  x ^= x >> 6;
+  x = (x * 0x5BDu) & m;
+  x ^= x >> 5;
+  x = (x + (k >> 20)) & m;
+  x = (x * 0x3A7u) & m;
+  x ^= x >> 6;
+  return (primary & ~m) | x;
+}
 RC_RNG_INLINE void rc_random_ld_pair(rc_rng_key key, rc_u32 dim, float* a, float* b) {
   rc_rng_key shared = key;
   shared.primary = 0x9E3779B9u; /* the rotation must not depend on the primary */
   rc_u32x4 rot = rc_random_bits(shared, dim >> 2);
-  *a = rc_bits_to_unit(rot.v[dim & 3u] + key.primary * 0xC13FA9A9u);        /* 2^32 / phi2 */
-  *b = rc_bits_to_unit(rot.v[(dim + 1u) & 3u] + key.primary * 0x91E10DA5u); /* 2^32 / phi2^2 */
+  rc_u32 i = rc_ld_scramble(key.primary, rot.v[(dim + 2u) & 3u]);
+  *a = rc_bits_to_unit(rot.v[dim & 3u] + i * 0xC13FA9A9u);        /* 2^32 / phi2 */
+  *b = rc_bits_to_unit(rot.v[(dim + 1u) & 3u] + i * 0x91E10DA5u); /* 2^32 / phi2^2 */
 }
 RC_RNG_INLINE float rc_random_ld(rc_rng_key key, rc_u32 dim) {
   float a, b;

@@ -200,8 +200,9 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m,
   float3 hn = two_sided ? (float3)(0.0f) : n;
   for (uint s = 0; s < P->nsources; ++s) {
     global const rc_source* src = S->sources + s;
-    /* Radiance subdivides less for rays that matter less: -ds scales with 1/weight. */
-    uint cells = rc_source_cells(src, p, P->direct.x / fmax(r->coef.w, 1e-6f));
+    /* Radiance subdivides less for rays that matter less: -ds scales with 1/weight, the
+     * shadow ray's, which rayorigin() lowers by the medium's estimated extinction (wfac). */
+    uint cells = rc_source_cells(src, p, P->direct.x / fmax(r->coef.w * o->wfac, 1e-6f));
     rc_src_parts parts;
     rc_source_parts(src, p, cells, &parts);
     for (uint k = 0; k < cells; ++k, dim += 2) {

@@ -36,6 +36,19 @@ V3 perpendicular(const V3& n) {
   return normalized(cross(axis, n));
 }
 
+// Radiance's getperpendicular() without randomizing (-u-): the last axis, scanning z, y, x, on
+// which n is under 0.6, crossed with n. Rings use it so that their partition cells (and so
+// which of them a spotlight's cone keeps) lie where Radiance's do.
+V3 radiance_perpendicular(const V3& n) {
+  for (int i = 2; i >= 0; --i)
+    if (std::abs(n[i]) < 0.6) {
+      V3 axis{0, 0, 0};
+      axis[i] = 1;
+      return normalized(cross(axis, n));
+    }
+  return perpendicular(n);
+}
+
 rc_float4 f4(const V3& v, double w) {
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]),
           static_cast<float>(w)};
@@ -224,7 +237,7 @@ private:
     s.kind = RC_SRC_FLAT;
     s.pos = f4(local(arg3(o.fargs, 0)), r1);
     s.axis = f4(n, kPi * (r1 * r1 - r0 * r0));
-    const V3 u = perpendicular(n);
+    const V3 u = radiance_perpendicular(n);
     s.su = f4(scale(u, r1), r0);
     s.sv = f4(scale(cross(n, u), r1), 0);
   }

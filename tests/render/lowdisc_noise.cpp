@@ -1,0 +1,97 @@
+// rpict's -u- must give noise without a pattern (issue 54 point 2). Its first-hit samples
+// follow a low-discrepancy sequence over the pixels; taken in raster order, pixels a fixed step
+// apart (a scanline, a sample step) sat a fixed step apart in the sequence and drew a lattice on
+// glossy surfaces. scenes/glossy_plane.rad is a rough metal plane under a fine checker of bright
+// and dark squares: every pixel is noisy, its expectation nearly flat. The -u- picture minus an
+// independent -u+ picture of the same view has expectation zero everywhere, so its
+// correlation from pixel to pixel is the noise's own: beyond the neighbouring pixel (where the
+// pixel jitter and the sample footprint overlap) it must vanish at every lag along x and y.
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "radcl/image/picture.h"
+#include "test_env.h"
+
+using namespace radcl;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kW = 256, kH = 192;
+
+std::vector<double> render(const std::string& u, const std::string& extra, std::string* log) {
+  fs::path out =
+      fs::temp_directory_path() / ("radcl-lowdisc-" + std::to_string(::getpid()) + u + ".hdr");
+  const std::string view = "-vtl -vp 0.05 0.05 0.5 -vd 0 0 -1 -vu 0 1 0 -vh 1.6 -vv 1.2";
+  int rc = test::run_command("cd " + test::data("scenes") + " && RADCL_SEED=3 " + test::bin_dir() +
+                                 "/rpict -u" + u + " " + view + " -x " + std::to_string(kW) +
+                                 " -y " + std::to_string(kH) + " -ab 0 " + extra + " -o " +
+                                 out.string() + " glossy_plane.rad",
+                             log);
+  if (rc != 0) return {};
+  image::Picture p = image::read_picture(out.string());
+  fs::remove(out);
+  if (p.width != kW || p.height != kH) return {};
+  std::vector<double> v;
+  for (const auto& c : p.colors())
+    v.push_back(0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2]);
+  return v;
+}
+
+// The largest |autocorrelation| of d over lags 2..24 along x (dy = 0) or y (dx = 0).
+double worst_correlation(const std::vector<double>& d, bool along_x, int* at) {
+  double mean = 0, var = 0;
+  for (double x : d)
+    mean += x / d.size();
+  for (double x : d)
+    var += (x - mean) * (x - mean) / d.size();
+  double worst = 0;
+  for (int lag = 2; lag <= 24; ++lag) {
+    const int dx = along_x ? lag : 0, dy = along_x ? 0 : lag;
+    double c = 0;
+    int n = 0;
+    for (int y = 0; y + dy < kH; ++y)
+      for (int x = 0; x + dx < kW; ++x, ++n)
+        c += (d[y * kW + x] - mean) * (d[(y + dy) * kW + x + dx] - mean);
+    const double rho = c / n / var;
+    if (std::fabs(rho) > worst) {
+      worst = std::fabs(rho);
+      *at = lag;
+    }
+  }
+  return worst;
+}
+
+} // namespace
+
+// At -ps 1 (every pixel traced). Four standard errors of a correlation over the picture's
+// pixels: 0.018 (measured after the fix: 0.011 along x, 0.012 along y). The raster-order
+// sequence failed it at lag 6 along x and lag 8 along y.
+TEST(LowDiscrepancyNoise, NoCorrelationBeyondTheNeighbourAtPs1) {
+  std::string log;
+  std::vector<double> a = render("-", "-ps 1", &log);
+  ASSERT_EQ(a.size(), std::size_t(kW) * kH) << log;
+  std::vector<double> b = render("+", "-ps 1", &log);
+  ASSERT_EQ(b.size(), a.size()) << log;
+  std::vector<double> d(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i)
+    d[i] = a[i] - b[i];
+  const double bound = 4.0 / std::sqrt(double(kW) * kH);
+  for (bool along_x : {true, false}) {
+    int at = 0;
+    double worst = worst_correlation(d, along_x, &at);
+    EXPECT_LT(worst, bound) << (along_x ? "along x" : "along y") << " at lag " << at;
+  }
+}
+
+// -u- runs stay repeatable: the same picture twice.
+TEST(LowDiscrepancyNoise, Repeatable) {
+  std::string log;
+  std::vector<double> a = render("-", "-ps 1", &log), b = render("-", "-ps 1", &log);
+  ASSERT_FALSE(a.empty()) << log;
+  EXPECT_EQ(a, b);
+}
