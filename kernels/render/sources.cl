@@ -308,22 +308,25 @@ static inline float3 rc_src_polygon_cell(global const rc_source* s, global const
 }
 
 static inline int rc_src_sample_flat(global const rc_source* s, global const float4* verts,
-                                     float3 p, rc_src_cell g, uint cells, float dj, float2 xi,
-                                     float3* pt, float* area) {
+                                     float3 p, rc_src_cell g, float dj, float2 xi, float3* pt,
+                                     float* area) {
   float3 n = s->axis.xyz;
   if (dot(p - s->pos.xyz, n) <= 0.0f) return 0; /* behind */
   float3 c = rc_src_rect_centre(s);
   float2 q = g.xy + dj * (2.0f * xi - 1.0f) * g.zw;
   if (s->nverts == 0u) {
-    /* Ring (a disc: Radiance makes no source of one with a hole): Radiance's point for cell
-     * point q, so that which cells of a spotlight's disc fall inside its cone (tested at that
-     * point) is Radiance's. Split or strongly jittered, the square is "trimmed" onto the disc
-     * ((u sqrt(1 - v^2/2), v sqrt(1 - u^2/2)) in radii); whole, q scales the disc's
-     * equal-area square (half side sqrt(pi)/2 radii). Every cell weighs the same area. */
-    float2 d = (cells > 1u || dj > 0.7f)
-                   ? (float2)(q.x * sqrt(1.0f - 0.5f * q.y * q.y),
-                              q.y * sqrt(1.0f - 0.5f * q.x * q.x))
-                   : q * 0.88622693f;
+    /* Ring: the square mapped onto the disc or annulus (area-proportional, so a jittered point
+     * is uniform over the cell's image). Without jitter the image's centroid (2x2 Gauss
+     * points) rather than the image of the cell centre keeps the quadrature second order. */
+    float ri = s->su.w / s->pos.w;
+    float2 d = rc_src_ring_map(q, ri);
+    if (dj < 1.0f) {
+      float2 o = g.zw * 0.57735027f;
+      float2 m = 0.25f * (rc_src_ring_map(g.xy + o, ri) + rc_src_ring_map(g.xy - o, ri) +
+                          rc_src_ring_map(g.xy + (float2)(o.x, -o.y), ri) +
+                          rc_src_ring_map(g.xy + (float2)(-o.x, o.y), ri));
+      d += (1.0f - dj) * (m - rc_src_ring_map(g.xy, ri));
+    }
     *pt = c + d.x * s->su.xyz + d.y * s->sv.xyz;
     *area = s->axis.w * g.z * g.w;
     return 1;
@@ -383,7 +386,7 @@ static inline int rc_source_sample_part(global const rc_source* s, global const 
   } else if (s->kind == RC_SRC_FLAT) {
     float3 pt;
     float area;
-    if (!rc_src_sample_flat(s, verts, p, g, cells, dj, xi, &pt, &area)) return 0;
+    if (!rc_src_sample_flat(s, verts, p, g, dj, xi, &pt, &area)) return 0;
     float3 q = pt - p;
     d = length(q);
     if (d <= 0.0f) return 0;
