@@ -151,6 +151,9 @@ typedef struct rc_hit {
   rc_float4 uv;   /* x,y: triangle barycentrics or surface parameters; z,w: 0 from the host, set
                      by the kernels from the ray before patterns see the hit: the ray's dist0,
                      and of it the shadow segments (rc_shadow.sdist0) */
+  rc_float4 pert; /* xyz: the surface's own tilt of the normal (Radiance's r->pert from o_mesh:
+                     a smoothed mesh triangle's interpolated unit normal less nrm), world, 0
+                     elsewhere; the kernels start the textures' perturbation from it. w unused */
   rc_u32 surface; /* compiled surface; RC_NONE for a miss that hits no distant source */
   rc_u32 prim;    /* triangle within a polygon or mesh */
   rc_u32 source;  /* light-source index of the surface hit, else RC_NONE */
@@ -394,7 +397,7 @@ typedef struct rc_rng_key {
   F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags) F(                               \
       rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip)                      \
       F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, medium) F(rc_ray, gecc) F(rc_ray, slights) F(rc_hit, pos) F(                             \
-          rc_hit, nrm) F(rc_hit, uv) F(rc_hit, surface) F(rc_hit, prim) F(rc_hit, source)                              \
+          rc_hit, nrm) F(rc_hit, uv) F(rc_hit, pert) F(rc_hit, surface) F(rc_hit, prim) F(rc_hit, source)                              \
           F(rc_hit, front) F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(                        \
               rc_surface, object) F(rc_surface, flags) F(rc_surface, clip) F(rc_surface, slots)                        \
               F(rc_surface, pad2) F(rc_material, type) F(rc_material, args) F(                                         \

@@ -105,7 +105,9 @@ static void rc_shade_mixture(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit
     o->cext = cext;
     o->wfac = 1.0f;
     o->pcol = (float3)(1.0f);
-    o->pert = (float3)(0.0f);
+    /* Radiance's raymixture hands each side a copy of the ray, its r->pert included: a smoothed
+     * mesh's tilt; the leaf's patterns (those before the mixture among them) add theirs. */
+    o->pert = h.pert.xyz;
     rc_shade_material(S, o, sr, h, S->materials[leaf], surf, k);
   }
   float pass = w.shaded ? w.passed : 1.0f;
@@ -128,7 +130,8 @@ static float3 rc_shadow_leaf(const rc_scene_args* S, uint idx, float3 d, const r
     if (m.alt == RC_NONE) return (float3)(1.0f);
     m = S->materials[m.alt];
   }
-  float3 pcol = (float3)(1.0f), pert = (float3)(0.0f);
+  /* The shadow ray's own r->pert: a smoothed mesh's tilt, then the leaf's patterns. */
+  float3 pcol = (float3)(1.0f), pert = h->pert.xyz;
   if (m.npatterns) rc_apply_patterns(S, &m, d, h, &pcol, &pert);
   int back_pass = !h->front && !(S->params.flags & RC_PF_BV);
   float3 n = h->front ? h->nrm.xyz : -h->nrm.xyz;
@@ -137,7 +140,9 @@ static float3 rc_shadow_leaf(const rc_scene_args* S, uint idx, float3 d, const r
 #ifdef RADCL_HAS_TRANS
   case RC_OBJ_TRANS: {
     if (back_pass) return (float3)(1.0f);
-    rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]) * pcol, a, -dot(d, n));
+    float3 pn; /* m_normal's Fresnel term takes the tilted normal's cosine */
+    float cos1 = rc_raynormal(n, h->front ? pert : -pert, d, -dot(d, n), &pn);
+    rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]) * pcol, a, cos1);
     return rc_trans_pure(&w) ? w.tcolor * w.tspec : (float3)(0.0f);
   }
 #endif
@@ -178,4 +183,18 @@ static float3 rc_shadow_mix(const rc_scene_args* S, const rc_material* m, float3
   while (rc_mix_next(S, &w, d, h, &leaf, &share, &path))
     t += share * rc_shadow_leaf(S, leaf, d, h);
   return t + (float3)(w.shaded ? w.passed : 1.0f);
+}
+
+/* r->pert once a mixture is shaded (raymixture blends its sides' by the coefficient): each
+ * leaf's by its share; void shares, and all of it when no leaf had a material, keep the hit's
+ * own. */
+static float3 rc_mix_pert(const rc_scene_args* S, const rc_material* m, float3 d, const rc_hit* h) {
+  rc_mix_walk w;
+  rc_mix_start(S, &w, m, d, h);
+  uint leaf, path;
+  float share;
+  float3 p = (float3)(0.0f);
+  while (rc_mix_next(S, &w, d, h, &leaf, &share, &path))
+    p += share * rc_material_pert(S, S->materials[leaf], d, h);
+  return p + (w.shaded ? w.passed : 1.0f) * h->pert.xyz;
 }

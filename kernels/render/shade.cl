@@ -116,6 +116,25 @@ static inline float3 rc_shadow_ext(const rc_scene_args* S, float3 cext, uint med
 
 #include "render/shade_material.cl"
 
+/* r->pert once a ray is shaded with material m at h (Radiance's, which rtrace's -on shows):
+ * the hit's own (a smoothed mesh's), plus the patterns of the material rc_shade_material
+ * shades it with (a mirror's or illum's alternate where it stands in). World space, in h's
+ * frame (before any flip of the material's own). */
+static float3 rc_material_pert(const rc_scene_args* S, rc_material m, float3 d, const rc_hit* h) {
+  float3 pcol = (float3)(1.0f), pert = h->pert.xyz;
+#ifdef RADCL_HAS_MIRROR
+  if (m.type == RC_OBJ_MIRROR && m.alt != RC_NONE) { /* a primary sees the alternate */
+    if (m.alt == RC_ALT_VOID) return pert;
+    m = S->materials[m.alt];
+  }
+#endif
+  if (m.type == RC_OBJ_ILLUM && m.alt != RC_NONE) m = S->materials[m.alt];
+#ifdef RADCL_HAS_PATTERNS
+  if (m.npatterns) rc_apply_patterns(S, &m, d, h, &pcol, &pert);
+#endif
+  return pert;
+}
+
 #ifdef RADCL_HAS_MIXFUNC
 #include "render/mixture.cl"
 #endif
@@ -142,6 +161,8 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   h.uv.w = 0.0f;
   o->dist = r.dist0 + fmax(h.pos.w, 0.0f);
   o->ng = h.surface == RC_SURF_IRRADIANCE ? (float3)(0.0f) : h.nrm.xyz; /* a meter: no surface */
+  /* A smoothed mesh's own tilt (Radiance's o_mesh sets r->pert); patterns add theirs. */
+  o->pert = h.pert.xyz;
   /* The host writes a hit's list of leaking records into nrm.w's bits (1 + its offset). */
   uint leaks = as_uint(h.nrm.w);
   if (leaks != 0u) o->blocked = S->amb_blocked + (leaks - 1u);
@@ -177,6 +198,8 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
     /* Leaving the removed part of a clipped object: the boundary is mod1's, facing the ray. */
     mat = S->materials[mat.alt];
     h.nrm = -h.nrm;
+    h.pert = -h.pert; /* Radiance's flipsurface turns the perturbation too */
+    o->pert = -o->pert;
     h.front = !h.front;
   }
 #endif
@@ -255,6 +278,50 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
     nspawn[i] = o.nspawn;
     cells[i] = (uchar)o.cells;
   }
+}
+
+/* rtrace's -on: per primary ray i, the perturbation r->pert of its first hit once shaded, as
+ * rc_shade_ray leaves it (a mixture blends its leaves', as raymixture does), in the frame of
+ * the hit's normal as the host gave it (an antimatter boundary's flip undone). */
+kernel void rc_hit_pert(global const rc_ray* rays, global const rc_hit* hits, uint n,
+                        RC_SCENE_PARAMS, global float4* pert) {
+  uint i = get_global_id(0);
+  if (i >= n) return;
+  RC_SCENE_INIT
+  rc_ray r = rays[i];
+  rc_hit h = hits[i];
+  h.uv.z = r.dist0; /* as rc_shade_ray gives the patterns */
+  h.uv.w = 0.0f;
+  float3 p = h.pert.xyz;
+  if (h.surface != RC_NONE && h.surface != RC_SURF_IRRADIANCE &&
+      S.surfaces[h.surface].material != RC_NONE) {
+    rc_surface surf = S.surfaces[h.surface];
+    rc_material mat = S.materials[surf.material];
+    float flip = 1.0f;
+    int shaded = 1;
+#ifdef RADCL_HAS_ANTIMATTER
+    shaded = (surf.clip & r.clip) == 0u;
+    if (shaded && mat.type == RC_OBJ_ANTIMATTER) {
+      shaded = rc_antimatter_shades(&mat, S.args + mat.args, r.inside);
+      if (shaded) { /* mod1's material, the surface flipped */
+        mat = S.materials[mat.alt];
+        h.nrm = -h.nrm;
+        h.pert = -h.pert;
+        h.front = !h.front;
+        flip = -1.0f;
+      }
+    }
+#endif
+    if (shaded) {
+#ifdef RADCL_HAS_MIXFUNC
+      if (mat.type == RC_OBJ_MIXFUNC)
+        p = flip * rc_mix_pert(&S, &mat, r.dir.xyz, &h);
+      else
+#endif
+        p = flip * rc_material_pert(&S, mat, r.dir.xyz, &h);
+    }
+  }
+  pert[i] = (float4)(p, 0.0f);
 }
 
 /* Per ray of the wave: its immediate contribution plus its unblocked shadow contributions and

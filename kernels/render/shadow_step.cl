@@ -93,6 +93,7 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
       if (rc_antimatter_shades(&m, a, s->inside)) { /* mod1's material, facing the ray */
         m = S->materials[m.alt];
         flipped.nrm = -flipped.nrm;
+        flipped.pert = -flipped.pert; /* flipsurface turns the perturbation too */
         flipped.front = !flipped.front;
         h = &flipped;
       }
@@ -111,7 +112,8 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
         return RC_SH_BLOCKED;
       if (m.alt != RC_NONE) m = S->materials[m.alt];
     }
-    float3 pcol = (float3)(1.0f), pert = (float3)(0.0f);
+    /* The shadow ray's own r->pert (o_mesh: a smoothed mesh's tilt), then the patterns'. */
+    float3 pcol = (float3)(1.0f), pert = h->pert.xyz;
 #ifdef RADCL_HAS_PATTERNS
     if (m.npatterns) rc_apply_patterns(S, &m, d, h, &pcol, &pert);
 #endif
@@ -149,7 +151,9 @@ static uint rc_shadow_at(const rc_scene_args* S, rc_shadow* s, const rc_hit* h, 
 #ifdef RADCL_HAS_TRANS
     case RC_OBJ_TRANS: {
       if (back_pass) break;
-      rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]) * pcol, a, -dot(d, n));
+      float3 pn; /* m_normal's Fresnel term takes the tilted normal's cosine */
+      float cos1 = rc_raynormal(n, h->front ? pert : -pert, d, -dot(d, n), &pn);
+      rc_ward_iso w = rc_trans_setup((float3)(a[0], a[1], a[2]) * pcol, a, cos1);
       if (!rc_trans_pure(&w)) return RC_SH_BLOCKED;
       coef = w.tcolor * w.tspec;
       break;

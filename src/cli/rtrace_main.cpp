@@ -78,6 +78,32 @@ struct Caster {
   }
 };
 
+// Radiance's raynormal() for -on: `n` (the normal facing the ray, `sign` times the hit's)
+// tilted by the hit's perturbation `pert` (in the hit's frame, so turned with it), made unit,
+// and turned back to the ray's side (direction `d`) if the tilt would change it. Untouched
+// without a perturbation, or where the tilt cancels the normal.
+void perturb(options::Vec3& n, double sign, const options::Vec3& pert, const options::Vec3& d) {
+  if (pert[0] == 0 && pert[1] == 0 && pert[2] == 0) return;
+  double t[3], len2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    t[i] = n[i] + sign * pert[i];
+    len2 += t[i] * t[i];
+  }
+  if (!(len2 > 0)) return;
+  const double len = std::sqrt(len2);
+  double rod = 0, nd = 0;
+  for (int i = 0; i < 3; ++i) {
+    t[i] /= len;
+    rod -= n[i] * d[i];
+    nd -= t[i] * d[i];
+  }
+  if ((nd > 0) != (rod > 0))
+    for (int i = 0; i < 3; ++i)
+      t[i] += 2 * nd * d[i];
+  for (int i = 0; i < 3; ++i)
+    n[i] = t[i];
+}
+
 struct PendingRay {
   options::Vec3 org, dir; // dir normalised; zero for a flush request
   double length = 0;      // input direction length (-ld)
@@ -250,6 +276,7 @@ private:
       double dn = r.normal[0] * p.dir[0] + r.normal[1] * p.dir[1] + r.normal[2] * p.dir[2];
       for (int i = 0; i < 3; ++i)
         o.normal[i] = dn > 0 ? -r.normal[i] : r.normal[i];
+      perturb(o.normal, dn > 0 ? -1.0 : 1.0, r.pert, p.dir);
       if (r.surface < cs.surfaces.size()) {
         o.surface = cs.surface_names[r.surface];
         o.modifier = cs.modifier_names[r.surface];

@@ -86,6 +86,37 @@ bool setup(const SceneGeometry::Impl& g, const Vec3& org, const Vec3& dir, doubl
 
 namespace {
 
+// Radiance's smoothed mesh normal (o_mesh): where all three vertices of mesh triangle `tri`
+// carry a normal, the normal interpolated at the hit with the point's barycentric weights (in
+// double from `local`, the point in the prototype's centred frame), carried to world as the
+// flat normal is and made unit; its difference from `flat` (world, unit) is the perturbation.
+// Zero without normals, on a degenerate triangle, or where the interpolation vanishes.
+Vec3 mesh_pert(const Prototype& p, const PlacementRecord& rec, std::uint32_t tri, const Vec3& local,
+               const Vec3& flat) {
+  const scene::TriangleMesh& m = *p.mesh;
+  const auto& t = m.triangles[tri];
+  for (std::uint32_t vi : t)
+    if (vi >= m.vertex_flags.size() || vi >= m.normals.size() ||
+        !(m.vertex_flags[vi] & scene::TriangleMesh::kHasNormal))
+      return {0, 0, 0};
+  // Weights of v1 and v2 from the sub-triangle areas, signed along the face normal.
+  const Vec3& v0 = p.mesh_vertices[t[0]];
+  const Vec3 e1 = sub(p.mesh_vertices[t[1]], v0), e2 = sub(p.mesh_vertices[t[2]], v0);
+  const Vec3 fn = cross(e1, e2), q = sub(local, v0);
+  const double area2 = dot(fn, fn);
+  if (!(area2 > 0)) return {0, 0, 0};
+  const double w1 = dot(cross(q, e2), fn) / area2, w2 = dot(cross(e1, q), fn) / area2;
+  const double w[3] = {1 - w1 - w2, w1, w2};
+  Vec3 n{0, 0, 0};
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c)
+      n[c] += w[k] * m.normals[t[k]][c];
+  n = rec.to_world.vector(n);
+  const double len = length(n);
+  if (!(len > 0)) return {0, 0, 0};
+  return sub(scale(n, 1 / len), flat);
+}
+
 // The answer from Embree's winning primitive and what the callbacks kept of it, in double,
 // written field by field into `out` (a hit built aside and copied in stalled on forwarding its
 // stores, and clearing a fresh one first cost as much: together a fifth of the query's own
@@ -139,6 +170,9 @@ void answer(const SceneGeometry::Impl& g, const RayContext& rc, unsigned geom, u
   h.t += rc.shift;
   h.normal = normalized(rec.to_world.vector(n));
   h.front = dot(h.normal, rc.dir) < 0;
+  // A mesh prototype holds triangles only.
+  h.pert = p.mesh != nullptr ? mesh_pert(p, rec, h.prim, rec.from_world.point(h.point), h.normal)
+                             : Vec3{0, 0, 0};
 }
 
 template <int K> struct Packet;

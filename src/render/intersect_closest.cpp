@@ -32,6 +32,7 @@ void Renderer::Impl::to_device(const geometry::Ray& ray, const std::optional<geo
     out.pos = f4(h->point[0] - centre[0], h->point[1] - centre[1], h->point[2] - centre[2], h->t);
     out.nrm = f4(h->normal[0], h->normal[1], h->normal[2], 0);
     out.uv = f4(h->u, h->v, 0, 0);
+    out.pert = f4(h->pert[0], h->pert[1], h->pert[2], 0); // a smoothed mesh's tilt
     surface = cs.surface_of(*h);
     out.prim = h->prim;
     out.front = h->front ? 1 : 0;
@@ -39,6 +40,7 @@ void Renderer::Impl::to_device(const geometry::Ray& ray, const std::optional<geo
     out.pos = f4(0, 0, 0, -1);
     out.nrm = f4(0, 0, 0, 0);
     out.uv = f4(0, 0, 0, 0);
+    out.pert = f4(0, 0, 0, 0);
     out.prim = 0;
     out.front = 1;
     surface = distant_surface(cs, geom, ray.dir);
@@ -135,6 +137,7 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
     r.t = gh[i]->t;
     r.point = gh[i]->point;
     r.normal = gh[i]->normal;
+    r.pert = gh[i]->pert; // a smoothed mesh's; the textures' come from the device (wave_loop)
     r.surface = hits[i].surface;
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 #include "pipeline_util.h"
 #include "radcl/render/irradiance_meter.h"
@@ -14,6 +15,34 @@ namespace radcl::render {
 
 using namespace ambient;
 using namespace pipeline;
+
+namespace {
+
+// rtrace's -on: the textures' part of the normal perturbation at each first hit of `part` (the
+// host gave the smoothed meshes' in trace), from the device's patterns (rc_hit_pert), into
+// the primaries' results. `k` is made on first use.
+void texture_perts(Renderer::Impl& im, std::optional<device::Kernel>& k,
+                   std::span<const rc_ray> part, const rc_hit* hits, std::span<PrimaryResult> res) {
+  const std::size_t n = part.size();
+  if (n == 0) return;
+  if (!k) k.emplace(im.program.kernel("rc_hit_pert"));
+  device::Buffer rays(im.ctx, n * sizeof(rc_ray)), bhits(im.ctx, n * sizeof(rc_hit)),
+      out(im.ctx, n * sizeof(rc_float4));
+  rays.write(part.data(), n * sizeof(rc_ray));
+  bhits.write(hits, n * sizeof(rc_hit));
+  k->arg(0, rays).arg(1, bhits).arg(2, static_cast<std::uint32_t>(n));
+  im.set_scene_args(*k, 3);
+  k->arg(Renderer::Impl::kSceneArgs + 3, out);
+  im.ctx.run(*k, n);
+  std::vector<rc_float4> p(n);
+  out.read(p.data(), n * sizeof(rc_float4));
+  for (std::size_t i = 0; i < n; ++i) {
+    PrimaryResult& r = res[im.slot(part[i].primary)];
+    if (r.hit) r.pert = {p[i].x, p[i].y, p[i].z};
+  }
+}
+
+} // namespace
 
 std::size_t Renderer::Impl::chunk_rays() const {
   if (const char* e = std::getenv("RADCL_CHUNK_RAYS"); e && *e)
@@ -159,6 +188,11 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   // chunk's hits and its primaries' geometric results, which shading never reads, and every
   // device command stays on this thread.
   bool first_wave = true;
+  // The caller's primaries on a scene with textures: their perturbation for -on needs the
+  // device's patterns (a mesh's smoothing alone the host knows).
+  const bool texture_pert = nesting == 0 && starts.empty() && meters.empty() &&
+                            (cs.features.has(RC_OBJ_TEXFUNC) || cs.features.has(RC_OBJ_TEXDATA));
+  std::optional<device::Kernel> pert_kernel;
   RayQueue& next = next_hold.v;
   // Three chunks' hits in turn: the one shaded, the next one traced beside it, and the last
   // one, which the tally fed beside the shading (feed_tally) may still read.
@@ -205,6 +239,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
       if (more && overlap)
         ahead_arena.execute([&] { tracing.run([&] { hits_at(a + chunk, ahead); }); });
       test_leaks(part, hits);
+      if (first_wave && texture_pert) texture_perts(*this, pert_kernel, part, hits.data(), res);
       // Shade in slices whose slots fit a modest allocation (a slice keeps queue order, so
       // sums stay in order).
       std::size_t limit = std::size_t{1} << 26;

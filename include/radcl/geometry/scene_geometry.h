@@ -30,6 +30,10 @@ struct Hit {
   std::int32_t placement = 0; // index into SceneGeometry::placements() (0 = main scene)
   std::uint32_t prim = 0;     // triangle within the polygon / mesh triangle index; 0 otherwise
   float u = 0, v = 0;         // barycentrics of that triangle (p = (1-u-v)v0 + u v1 + v v2)
+  // The surface's own tilt of the normal (Radiance's r->pert from o_mesh): on a mesh triangle
+  // whose three vertices all carry normals, the unit world normal interpolated from them at the
+  // hit, less `normal`; zero elsewhere. normal + pert is the smoothed normal.
+  Vec3d pert{};
 };
 
 struct Ray {

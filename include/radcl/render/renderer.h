@@ -105,6 +105,10 @@ struct PrimaryResult {
   double mirror_t = -1;
   double through_t = -1; // length of the straight transmission beyond the first hit, -1: none
   Vec3d through_at{};    // where that transmission last met a surface (its lengths add up)
+  // The hit's normal perturbation once shaded (Radiance's r->pert): a smoothed mesh's tilt plus
+  // the textures' (texfunc, texdata; a mixture's blended by its coefficients), world, in the
+  // frame of `normal`: normal + pert, made unit, is the perturbed normal (rtrace's -on).
+  Vec3d pert{};
   std::vector<TracedRay> traced; // trace mode: the tree in post-order (children first)
 };
 
