@@ -332,6 +332,7 @@ private:
     ps.yres = yres;
     ps.ps = opt_.pixel_sample;
     ps.pt = opt_.pixel_threshold;
+    ps.compare_depth = !opt_.z_file.empty(); // as rpict, which compares depths only with -z
     ps.pj = opt_.pixel_jitter;
     ps.pd = opt_.pixel_aperture;
     ps.seed = settings_.seed;

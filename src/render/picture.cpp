@@ -7,6 +7,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "picture_fill.h"
 #include "radcl/image/view_ray.h"
 #include "radcl/rng.h"
 #include "radcl/util/error.h"
@@ -14,16 +15,11 @@
 namespace radcl::render {
 namespace {
 
-struct Sample {
-  std::array<float, 3> v{0, 0, 0};
-  float z = 0;
-  bool done = false;
-  bool traced = false; // traced (not interpolated)
-};
+using detail::FillSample;
 
-// Radiance's test for "these two samples disagree": any channel off by more than pt relative,
-// or the depths.
-bool differ(const Sample& a, const Sample& b, double pt) {
+// Whether two samples disagree, for the edge samples of antialias(): any channel off by more
+// than pt relative, or the depths.
+bool differ(const FillSample& a, const FillSample& b, double pt) {
   for (int c = 0; c < 3; ++c) {
     double d = std::fabs(a.v[c] - b.v[c]);
     if (d > pt * a.v[c] || d > pt * b.v[c]) return true;
@@ -31,64 +27,39 @@ bool differ(const Sample& a, const Sample& b, double pt) {
   return 2 * std::fabs(a.z - b.z) > pt * (a.z + b.z);
 }
 
-Sample lerp(const Sample& a, const Sample& b, double t) {
-  Sample s;
-  for (int c = 0; c < 3; ++c)
-    s.v[c] = static_cast<float>(a.v[c] + t * (b.v[c] - a.v[c]));
-  s.z = static_cast<float>(a.z + t * (b.z - a.z));
-  s.done = true;
-  return s;
-}
-
 class Bar {
 public:
   Bar(Renderer& r, const options::View& view, const PictureSettings& st, PictureStats& stats)
       : r_(r), view_(view), st_(st), stats_(stats) {}
 
-  // Pixel (x, row) with row counted from the top; rows [top, top + n).
-  // `fixed` leading rows are already final (the previous bar's last row).
-  void render(int top, int n, std::vector<Sample>& grid, int step, int fixed) {
+  // Rows [top, top + grid's rows) counted from the top, `base` the bar's base rows (in the
+  // bar); with `fixed`, the first is the previous bar's last, already final. The walk of
+  // rpict's decisions is repeated, each time tracing the pixels it found certain, until the
+  // bar is complete.
+  void render(int top, std::vector<FillSample>& grid, const std::vector<int>& base, bool fixed,
+              detail::PictureFill& fill, detail::FillState& state) {
     top_ = top;
-    n_ = n;
+    n_ = static_cast<int>(grid.size() / st_.xres);
     grid_ = &grid;
-    const int w = st_.xres;
-    // Base samples: every `step` pixels on the bar's sampled rows, plus its last column.
-    std::vector<int> rows;
-    for (int y = 0; y < n; y += step)
-      rows.push_back(y);
-    if (rows.back() != n - 1) rows.push_back(n - 1);
-    std::vector<int> cols;
-    for (int x = 0; x < w; x += step)
-      cols.push_back(x);
-    if (cols.back() != w - 1) cols.push_back(w - 1);
-    for (int y : rows)
-      for (int x : cols)
-        want(x, y);
-    trace();
-    // Fill the sampled rows between sampled columns, then every column between sampled rows.
-    for (std::size_t k = 0; k + 1 < cols.size(); ++k)
-      for (int y : rows)
-        push_span(cols[k], y, cols[k + 1], y);
-    refine();
-    for (std::size_t k = 0; k + 1 < rows.size(); ++k)
-      for (int x = 0; x < w; ++x)
-        push_span(x, rows[k], x, rows[k + 1]);
-    refine();
-    if (st_.pj > 0) antialias(fixed);
+    while (!fill.walk(grid, base, fixed, state, pending_)) {
+      trace();
+      ++stats_.waves;
+    }
+  }
+
+  // Edge samples on the finished bar (-pj > 0).
+  void finish(bool fixed) {
+    if (st_.pj > 0) antialias(fixed ? 1 : 0);
   }
 
 private:
-  struct Span {
-    int x0, y0, x1, y1;
-  };
   Renderer& r_;
   const options::View& view_;
   const PictureSettings& st_;
   PictureStats& stats_;
   int top_ = 0, n_ = 0;
-  std::vector<Sample>* grid_ = nullptr;
+  std::vector<FillSample>* grid_ = nullptr;
   std::vector<std::pair<int, int>> pending_;
-  std::vector<Span> spans_;
 
   // -pd: the origin moves over a disc of diameter pd across the view point, the ray still
   // passing through the point it aimed at on the focal plane (-vd's length away).
@@ -164,7 +135,7 @@ private:
     std::vector<std::pair<int, int>> edge;
     for (int y = fixed; y < n_; ++y)
       for (int x = 0; x < w; ++x) {
-        const Sample& s = at(x, y);
+        const FillSample& s = at(x, y);
         if (!s.traced) continue;
         bool e = (x > 0 && differ(s, at(x - 1, y), st_.pt)) ||
                  (x + 1 < w && differ(s, at(x + 1, y), st_.pt)) ||
@@ -214,42 +185,7 @@ private:
     }
   }
 
-  Sample& at(int x, int y) { return (*grid_)[static_cast<std::size_t>(y) * st_.xres + x]; }
-  void want(int x, int y) {
-    if (!at(x, y).done) pending_.emplace_back(x, y);
-  }
-  void push_span(int x0, int y0, int x1, int y1) {
-    if (std::abs(x1 - x0) + std::abs(y1 - y0) > 1) spans_.push_back({x0, y0, x1, y1});
-  }
-
-  // Breadth-first bisection: each level traces the midpoints of disagreeing spans in one
-  // wave and interpolates the rest, as rpict's recursive fill does one span at a time.
-  void refine() {
-    while (!spans_.empty()) {
-      std::vector<Span> next;
-      std::vector<Span> split;
-      for (const Span& s : spans_) {
-        if (differ(at(s.x0, s.y0), at(s.x1, s.y1), st_.pt)) {
-          int mx = (s.x0 + s.x1) / 2, my = (s.y0 + s.y1) / 2;
-          want(mx, my);
-          split.push_back(s);
-        } else {
-          int len = std::max(std::abs(s.x1 - s.x0), std::abs(s.y1 - s.y0));
-          for (int i = 1; i < len; ++i) {
-            int x = s.x0 + (s.x1 - s.x0) * i / len, y = s.y0 + (s.y1 - s.y0) * i / len;
-            if (!at(x, y).done) at(x, y) = lerp(at(s.x0, s.y0), at(s.x1, s.y1), double(i) / len);
-          }
-        }
-      }
-      trace();
-      for (const Span& s : split) {
-        int mx = (s.x0 + s.x1) / 2, my = (s.y0 + s.y1) / 2;
-        if (std::abs(mx - s.x0) + std::abs(my - s.y0) > 1) next.push_back({s.x0, s.y0, mx, my});
-        if (std::abs(s.x1 - mx) + std::abs(s.y1 - my) > 1) next.push_back({mx, my, s.x1, s.y1});
-      }
-      spans_ = std::move(next);
-    }
-  }
+  FillSample& at(int x, int y) { return (*grid_)[static_cast<std::size_t>(y) * st_.xres + x]; }
 
   void trace() {
     std::sort(pending_.begin(), pending_.end());
@@ -265,8 +201,8 @@ private:
       double h = (x + 0.5 + st_.pj * (0.5 - u[0])) / st_.xres;
       double v = (j + 0.5 + st_.pj * (0.5 - u[1])) / st_.yres;
       std::optional<image::ViewRay> vr = image::view_ray(view_, h, v);
-      Sample& s = at(x, y);
-      s.done = true;
+      FillSample& s = at(x, y);
+      s.known = true;
       s.traced = true;
       if (!vr || !motion(*vr, h, v, key)) { // outside a fisheye: black at distance 0
         s.v = {0, 0, 0};
@@ -277,13 +213,14 @@ private:
       rays.push_back({vr->org, vr->dir, vr->maxlen, id}); // the pixel keys its numbers
       which.push_back(static_cast<std::size_t>(y) * st_.xres + x);
     }
+    stats_.traced_pixels += pending_.size();
     pending_.clear();
     if (rays.empty()) return;
     std::vector<PrimaryResult> res(rays.size());
     r_.render(rays, res);
     stats_.primary_rays += rays.size();
     for (std::size_t i = 0; i < rays.size(); ++i) {
-      Sample& s = (*grid_)[which[i]];
+      FillSample& s = (*grid_)[which[i]];
       for (int c = 0; c < 3; ++c)
         s.v[c] = static_cast<float>(res[i].value[c]);
       s.z = static_cast<float>(res[i].t);
@@ -325,37 +262,54 @@ PictureStats render_picture(Renderer& renderer, const options::View& view,
                             const PictureSettings& st,
                             const std::function<void(const PictureRows&)>& emit) {
   PictureStats stats;
-  const int step = std::clamp(st.ps, 1, 16);
-  check_rows_fit(st.xres, step);
-  // Bars tall enough to make a good wave, a multiple of the sample step.
-  int bar = std::max(step, (1 << 17) / std::max(1, st.xres));
-  bar = std::max(step, bar / step * step);
+  check_rows_fit(st.xres, std::clamp(st.ps, 1, 16));
+  if (st.xres <= 0 || st.first_row >= st.yres) return stats;
+  // rpict's base lines: every ystep rows from the first row to compute, the last one at the
+  // bottom row (the last interval shorter).
+  const int ystep = detail::fill_ystep(st.ps);
+  std::vector<int> lines;
+  for (int y = st.first_row; y < st.yres - 1 + ystep; y += ystep)
+    lines.push_back(std::min(y, st.yres - 1));
+  // Bars of whole intervals between base lines, tall enough to make good waves; each shares
+  // its first base line with the previous bar's last.
+  const std::size_t per_bar =
+      static_cast<std::size_t>(std::max(1, (1 << 17) / std::max(1, st.xres) / ystep));
+  detail::PictureFill fill(st.xres, st.ps, st.pt, st.compare_depth);
+  detail::FillState state = fill.start();
   Bar worker(renderer, view, st, stats);
-  // Each bar shares its first row with the previous bar's last (already computed) row.
-  std::vector<Sample> carry;
-  for (int top = st.first_row; top < st.yres;) {
-    int n = std::min(bar + 1, st.yres - top + (carry.empty() ? 0 : 1));
-    int start = carry.empty() ? top : top - 1;
-    std::vector<Sample> grid(static_cast<std::size_t>(n) * st.xres);
-    if (!carry.empty()) std::copy(carry.begin(), carry.end(), grid.begin());
-    worker.render(start, n, grid, step, carry.empty() ? 0 : 1);
+  std::vector<FillSample> carry; // the last base line as the fill left it (before antialias)
+  for (std::size_t first = 0; first < lines.size();) {
+    const bool fixed = !carry.empty();
+    const std::size_t last = std::min(lines.size() - 1, first + (fixed ? per_bar : per_bar - 1));
+    const int top = lines[first];
+    const int n = lines[last] - top + 1;
+    std::vector<int> base;
+    for (std::size_t k = first; k <= last; ++k)
+      base.push_back(lines[k] - top);
+    std::vector<FillSample> grid(static_cast<std::size_t>(n) * st.xres);
+    if (fixed) std::copy(carry.begin(), carry.end(), grid.begin());
+    worker.render(top, grid, base, fixed, fill, state);
+    carry.assign(grid.end() - st.xres, grid.end());
+    worker.finish(fixed);
     PictureRows out;
-    int skip = carry.empty() ? 0 : 1;
-    out.first = start + skip;
+    const int skip = fixed ? 1 : 0;
+    out.first = top + skip;
     out.count = n - skip;
     out.pixels.resize(static_cast<std::size_t>(out.count) * st.xres);
     out.depth.resize(out.pixels.size());
+    out.traced.resize(out.pixels.size());
     for (int y = skip; y < n; ++y)
       for (int x = 0; x < st.xres; ++x) {
-        const Sample& s = grid[static_cast<std::size_t>(y) * st.xres + x];
+        const FillSample& s = grid[static_cast<std::size_t>(y) * st.xres + x];
         std::size_t o = static_cast<std::size_t>(y - skip) * st.xres + x;
         out.pixels[o] = s.v;
         out.depth[o] = s.z;
+        out.traced[o] = s.traced ? 1 : 0;
       }
     stats.pixels += out.pixels.size();
-    emit(out);
-    carry.assign(grid.end() - st.xres, grid.end());
-    top = out.first + out.count;
+    if (out.count > 0) emit(out);
+    first = last;
+    if (last == lines.size() - 1) break;
   }
   return stats;
 }

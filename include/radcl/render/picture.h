@@ -1,7 +1,7 @@
-// rpict's picture loop on the wavefront renderer: rays through a view, adaptive sampling in
-// the spirit of rpict's -ps/-pt (sample every ps pixels, fill in where neighbours agree,
-// trace where they don't), pixel jitter -pj, produced in bars of scanlines from the top so the
-// picture can be written and reported as it grows.
+// rpict's picture loop on the wavefront renderer: rays through a view, rpict's adaptive
+// sampling -ps/-pt (its base grid, its fill rule and its budgets: the same pixels are traced
+// for the same values; src/render/picture_fill.h), pixel jitter -pj, produced in bars of
+// scanlines from the top so the picture can be written and reported as it grows.
 #pragma once
 
 #include <array>
@@ -18,6 +18,7 @@ struct PictureSettings {
   int xres = 512, yres = 512; // final resolution (after normalize_aspect)
   int ps = 4;                 // -ps sample spacing, clamped to 1..16
   double pt = 0.05;           // -pt relative difference that forces a sample
+  bool compare_depth = false; // depths that differ by -pt force a sample too (rpict with -z)
   double pj = 0.67;           // -pj pixel jitter
   double pd = 0;              // -pd aperture diameter (depth of field, focus at -vd's length)
   // -pm motion blur: with the previous frame's view, each sample's ray is blended towards the
@@ -33,11 +34,14 @@ struct PictureRows {
   int count = 0;
   std::vector<std::array<float, 3>> pixels; // count x xres, top row first
   std::vector<float> depth;                 // distance to the first hit per pixel
+  std::vector<std::uint8_t> traced;         // 1 where the fill traced the pixel, 0 interpolated
 };
 
 struct PictureStats {
-  std::uint64_t primary_rays = 0; // traced (the rest were interpolated)
+  std::uint64_t primary_rays = 0;  // primary rays, the edge samples of -pj's antialiasing too
+  std::uint64_t traced_pixels = 0; // pixels traced by the fill (the rest were interpolated)
   std::uint64_t pixels = 0;
+  std::uint64_t waves = 0; // render() calls of the fill
 };
 
 // Calls `emit` for each finished bar, top to bottom. Returns what was traced.
