@@ -40,6 +40,9 @@ export OCL_ICD_VENDORS=/tmp/vendors LD_LIBRARY_PATH=$b/lib POCL_CACHE_DIR=/tmp/p
   RADCL_SOURCE_DIR=$root RADCL_REFERENCE=$b/ref
 mkdir -p "$b/build" && ln -sfn "$b/bin" "$b/build/bin"
 [ -x "$b/radiance/rtrace" ] && [ -z "${NO_RADIANCE:-}" ] && export RADIANCE_BIN=$b/radiance RAYPATH=.:$b/radiance RADIANCE_LIB=$b/radiance
+# Without Radiance bundled, radcl's own function files (rayinit.cal): the bundle's bin/ has no
+# lib/radcl beside it, so the programs would not find them.
+[ -n "${RAYPATH:-}" ] || export RAYPATH=.:$root/lib
 
 tests() { # the stability suite, then the rest, each executable under a time limit; TEST_JOBS
   # processes at once (NVIDIA's compiles of each scene's program are CPU-bound: they overlap),
