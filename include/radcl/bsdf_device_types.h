@@ -1,5 +1,5 @@
 /* Plain-C records of BSDF data on the device (Radiance's BSDF and aBSDF materials), shared by
- * the host (include/radcl/render/bsdf_tables.h builds them) and kernels/materials/bsdf_eval.cl.
+ * the host (include/radcl/render/compile/bsdf_tables.h builds them) and kernels/materials/bsdf_eval.cl.
  * Layout rules as device_types.h: 4-byte scalars and rc_float4 only, 16-byte multiples.
  *
  * Four buffers hold any number of BSDF files: rc_bsdf records (one per file), rc_bsdf_comp

@@ -191,7 +191,7 @@ typedef struct rc_material {
   rc_u32 back;      /* mixfunc: background material (RC_NONE = void; alt is the foreground, and
                        `patterns` its coefficient's record); unused otherwise */
   rc_u32 func;      /* BRDF materials (plasfunc .. BRTDfunc): their function record in the
-                       pattern buffer (render/func_materials.h); unused otherwise */
+                       pattern buffer (render/compile/func_materials.h); unused otherwise */
 } rc_material;
 
 /* A pattern or texture (brightfunc, colorfunc, texfunc) or a mixture's coefficient (mixfunc):
@@ -341,7 +341,7 @@ typedef struct rc_amb_node {
   rc_u32 bin;   /* 0..5: the axis is bin / 2, its negative where bin is odd */
 } rc_amb_node;
 
-/* One hemisphere of ambient samples to turn into a record (kernels/render/ambient_record.cl,
+/* One hemisphere of ambient samples to turn into a record (kernels/ambient/ambient_record.cl,
  * Radiance's doambient after sampling). ux, uy and nrm are orthonormal, uy = nrm x ux. */
 typedef struct rc_amb_hemi {
   rc_float4 pos; /* the point (re-centred); w = the weight doambient gets (the record's) */

@@ -3,7 +3,7 @@
  * ashik2 (Ashikhmin & Shirley's model, ashikhmin.c). This part (included by direct.cl) sets up a
  * hit and gives the direct coefficient of one source sample; materials/aniso_shade.cl shades.
  * The orientation vector u comes from three expressions in the material's function record
- * (src/render/func_materials.cpp: flags, then their rc_pattern_call numbers after the 25
+ * (src/render/compile/func_materials.cpp: flags, then their rc_pattern_call numbers after the 25
  * transform floats), evaluated in function space and turned to world space. */
 #ifndef RC_ANISO_CL
 #define RC_ANISO_CL

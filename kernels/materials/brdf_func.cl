@@ -3,7 +3,7 @@
  * up a hit and gives the direct coefficient of one source sample; materials/brdf_shade.cl
  * shades. Each material has a function record (rc_material.func) in the pattern buffer: its
  * real arguments, its transform (patterns.cl's 25 floats) and then a descriptor, integers as
- * float bits (src/render/func_materials.cpp):
+ * float bits (src/render/compile/func_materials.cpp):
  *   func and data materials: flags, function (rc_brdf_call), data offset or RC_NONE, n,
  *     n coordinate functions (rc_brdf_call);
  *   BRTDfunc: flags (bit 0: direct part even without diffuse), 6 coefficient expressions

@@ -1,5 +1,5 @@
 /* BSDF data on the device (Radiance's BSDF and aBSDF materials): evaluation, sampling and
- * directional-hemispherical totals of the tables include/radcl/render/bsdf_tables.h builds
+ * directional-hemispherical totals of the tables include/radcl/render/compile/bsdf_tables.h builds
  * (layout in include/radcl/bsdf_device_types.h). Vectors are unit vectors in the BSDF's local
  * frame (front = +Z, both pointing away from the surface: `in` towards the light, `out`
  * towards the viewer). Values are BSDFs in 1/sr, CIE X, Y, Z (grey data: X = Y = Z).

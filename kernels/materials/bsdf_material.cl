@@ -6,7 +6,7 @@
  * As Radiance, every query passes the vector towards the viewer as the BSDF's incident vector
  * (reciprocity), so `in` below is the view side and `out` the light's or the sample's.
  *
- * The function record (src/render/bsdf_materials.cpp) holds, after the 25 transform floats:
+ * The function record (src/render/compile/bsdf_materials.cpp) holds, after the 25 transform floats:
  * flags (bit 0: aBSDF), the offsets in the argument buffer of the file's rc_bsdf record, its
  * components, its floats and its ints, the thickness expression (RC_NONE for aBSDF) and the up
  * vector's three expressions. */

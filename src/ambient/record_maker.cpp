@@ -42,7 +42,7 @@ rc_amb_hemi make_hemisphere(const std::array<double, 3>& p, const std::array<dou
 }
 
 RecordMaker::RecordMaker(device::Context& ctx)
-    : ctx_(ctx), program_(ctx, device::ProgramSource{{"render/ambient_record.cl"}, "", ""}),
+    : ctx_(ctx), program_(ctx, device::ProgramSource{{"ambient/ambient_record.cl"}, "", ""}),
       kernel_(program_.kernel("rc_make_record")) {}
 
 void RecordMaker::run(const device::Buffer& hemis, const device::Buffer& samples,

@@ -6,7 +6,7 @@
 
 #include "radcl/ambient/ambient_file.h"
 #include "radcl/options/render_options.h"
-#include "radcl/render/renderer.h"
+#include "radcl/render/pipeline/renderer.h"
 
 namespace radcl::cli {
 

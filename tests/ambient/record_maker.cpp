@@ -1,4 +1,4 @@
-// Records made from sampled hemispheres (render/ambient_record.h, kernels/render/ambient_record.cl)
+// Records made from sampled hemispheres (render/ambient_record.h, kernels/ambient/ambient_record.cl)
 // against a double-precision reference written here from the derivation in docs/cache-internals.md
 // ("Making a record"): per-triangle sums of full 3x3 edge terms, as Radiance assembles them,
 // where the kernel gathers per edge in the tangent frame. The reference's gradient and Hessian

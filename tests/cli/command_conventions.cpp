@@ -70,7 +70,7 @@ TEST_F(CommandConventions, BadOptionsAndFilesAsRadiance) {
       << err;
 }
 
-// The global participating medium's options take effect (tests/render/golden_medium.cpp checks
+// The global participating medium's options take effect (tests/render/golden/golden_medium.cpp checks
 // the values); its albedo, eccentricity and sampling distance do nothing without extinction, as
 // in Radiance.
 TEST_F(CommandConventions, MediumOptionsTakeEffect) {

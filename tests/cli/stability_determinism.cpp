@@ -1,7 +1,7 @@
 // The whole programs give bit-identical output for the same inputs and seed: across runs,
 // host thread counts (rtrace -n; rpict on one CPU through taskset, as it takes TBB's default)
 // and the size of the waves rtrace cuts its input into (input that pauses is answered in
-// smaller waves) — with the irradiance cache being built, too. tests/render/determinism.cpp
+// smaller waves) — with the irradiance cache being built, too. tests/render/pipeline/determinism.cpp
 // checks the same through the Renderer API. rtrace and rpict default to -u+ (a seed from the
 // clock, as Radiance's): RADCL_SEED fixes it.
 #include <filesystem>
@@ -132,7 +132,7 @@ TEST(StabilityDeterminism, RtraceSeparateDeviceMemory) {
 }
 
 // With separate device memory (as on a GPU) each generation's rays stay on the device from
-// the shading that made them to the one that shades them (src/render/generation_mirror.h);
+// the shading that made them to the one that shades them (src/render/pipeline/generation_mirror.h);
 // rays whose children overflow their slots (small slots: tiny chunks) are shaded again straight
 // into that copy. The same bits with the copy, without it (RADCL_MIRROR=0) and in shared memory:
 // without the cache and with -as (the tally tree changes the rays on the host), while the cache

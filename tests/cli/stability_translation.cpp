@@ -243,7 +243,7 @@ TEST_F(StabilityTranslation, AmbientNoCacheMillimetreSensors) {
 
 // In km Radiance's fixed 1e-4 is 0.1 m above a 0.8 mm workplane (max 23%, RMS 5.4%); the
 // meter now sits 1e-6 of the model's size out in models under 100 units across
-// (render/irradiance_meter.h).
+// (render/pipeline/irradiance_meter.h).
 TEST_F(StabilityTranslation, AmbientNoCacheKilometreSensors) {
   expect_same({{1e-3, 0}}, kNoCache, 0.005);
 }

@@ -4,7 +4,7 @@
 // default) would end the third bounce that Radiance's cached run keeps: these runs use
 // -lw 1e-4. The mean over the picture needs no more than 64 x 64 pixels (the Cornell runs at
 // 128 x 128 and 96 x 96 were a fifth of the suite's time on two cores). -as 0: super-sampling
-// only moves noise around (tests/render/ambient_supersampling.cpp checks it) and would double
+// only moves noise around (tests/render/pipeline/ambient_supersampling.cpp checks it) and would double
 // these runs.
 #include <algorithm>
 #include <cmath>

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "radcl/device/context.h"
-#include "radcl/render/irradiance_meter.h"
-#include "radcl/render/renderer.h"
+#include "radcl/render/pipeline/irradiance_meter.h"
+#include "radcl/render/pipeline/renderer.h"
 #include "radcl/scene/loader.h"
 #include "temp_dir.h"
 
@@ -53,7 +53,7 @@ protected:
     return res;
   }
 
-  // Where -I meters along `rays` measure in scene file `file` (render/irradiance_meter.h).
+  // Where -I meters along `rays` measure in scene file `file` (render/pipeline/irradiance_meter.h).
   static std::vector<render::Vec3d> meter_points(const std::string& file,
                                                  const std::vector<render::PrimaryRay>& rays) {
     scene::LoadedScene ls = scene::load_scene({file});

@@ -1,4 +1,4 @@
-// The irradiance cache's records in the form the lookup kernel reads (kernels/render/
+// The irradiance cache's records in the form the lookup kernel reads (kernels/ambient/
 // ambient_cache.cl): decoded, re-centred records in BVH leaf order and the flattened BVH over
 // their regions, built with Embree's BVH builder.
 #pragma once
@@ -39,7 +39,7 @@ void rejoin_ambient_caches(AmbientCacheBuffers& ab, std::size_t a_nodes, std::si
 
 // Whether node `nd`'s normal cone can hold a unit normal within angle theta (cosine ct, sine
 // st; theta <= pi/2) of unit `n`, or of -n as well when `two_sided` (as the kernel's test in
-// kernels/render/ambient_cache.cl).
+// kernels/ambient/ambient_cache.cl).
 inline bool node_cone_may_hold(const rc_amb_node& nd, const std::array<double, 3>& n, double ct,
                                double st, bool two_sided) {
   double c = nd.bin < 2 ? n[0] : (nd.bin < 4 ? n[1] : n[2]);

@@ -3,7 +3,7 @@
 // if a short test ray from the point towards the record meets nothing. The lookup kernel
 // cannot trace, so before a wave is shaded the host finds, for every hit, the marked records
 // the kernel's tests could accept and traces their test rays; the kernel then skips the
-// records listed as blocked (kernels/render/ambient_cache.cl).
+// records listed as blocked (kernels/ambient/ambient_cache.cl).
 #pragma once
 
 #include <array>

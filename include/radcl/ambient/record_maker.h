@@ -1,5 +1,5 @@
 // Making irradiance-cache records from sampled hemispheres on the device
-// (kernels/render/ambient_record.cl, Radiance's doambient after sampling), and turning a made
+// (kernels/ambient/ambient_record.cl, Radiance's doambient after sampling), and turning a made
 // record into the file's form. Which points get records and how their samples are traced is
 // the caller's business; docs/cache-internals.md ("Making a record") gives the inputs' meaning.
 #pragma once
