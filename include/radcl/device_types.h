@@ -34,16 +34,17 @@ typedef struct rc_float4 {
 #define RADCL_OBJECT_TYPES(X)                                                                      \
   X(POLYGON, "polygon")                                                                            \
   X(CONE, "cone")                                                                                  \
-  X(SPHERE, "sphere") X(TEXFUNC, "texfunc") X(RING, "ring") X(CYLINDER, "cylinder") X(             \
-      INSTANCE, "instance") X(CUP, "cup") X(BUBBLE, "bubble") X(TUBE, "tube") X(MESH, "mesh")      \
-      X(ALIAS, "alias") X(PLASTIC, "plastic") X(METAL, "metal") X(GLASS, "glass") X(               \
-          TRANS, "trans") X(DIELECTRIC, "dielectric") X(PLASTIC2, "plastic2") X(METAL2, "metal2")  \
-          X(TRANS2, "trans2") X(INTERFACE, "interface") X(PLASFUNC, "plasfunc")                    \
-              X(METFUNC, "metfunc") X(BRIGHTFUNC, "brightfunc") X(BRIGHTDATA, "brightdata")        \
-                  X(BRIGHTTEXT, "brighttext") X(COLORPICT, "colorpict") X(GLOW, "glow")            \
-                      X(SOURCE, "source") X(LIGHT, "light") X(ILLUM, "illum")                      \
-                          X(SPOTLIGHT, "spotlight") X(MIST, "mist") X(MIRROR, "mirror")            \
-                              X(TRANSFUNC, "transfunc") X(BRTDFUNC, "BRTDfunc") X(BSDF, "BSDF")    \
+  X(SPHERE, "sphere")                                                                              \
+  X(TEXFUNC, "texfunc") X(RING, "ring") X(CYLINDER, "cylinder") X(INSTANCE, "instance")            \
+      X(CUP, "cup") X(BUBBLE, "bubble") X(TUBE, "tube") X(MESH, "mesh") X(ALIAS, "alias")          \
+          X(PLASTIC, "plastic") X(METAL, "metal") X(GLASS, "glass") X(TRANS, "trans")              \
+              X(DIELECTRIC, "dielectric") X(PLASTIC2, "plastic2") X(METAL2, "metal2")              \
+                  X(TRANS2, "trans2") X(INTERFACE, "interface") X(PLASFUNC, "plasfunc") X(         \
+                      METFUNC, "metfunc") X(BRIGHTFUNC, "brightfunc") X(BRIGHTDATA, "brightdata")  \
+                      X(BRIGHTTEXT, "brighttext") X(COLORPICT, "colorpict") X(GLOW, "glow")        \
+                          X(SOURCE, "source") X(LIGHT, "light") X(ILLUM, "illum")                  \
+                              X(SPOTLIGHT, "spotlight") X(MIST, "mist") X(MIRROR, "mirror") X(     \
+                                  TRANSFUNC, "transfunc") X(BRTDFUNC, "BRTDfunc") X(BSDF, "BSDF")  \
                                   X(ABSDF, "aBSDF") X(PLASDATA, "plasdata") X(METDATA, "metdata")  \
                                       X(TRANSDATA, "transdata") X(COLORFUNC, "colorfunc")          \
                                           X(ANTIMATTER, "antimatter") X(COLORDATA, "colordata")    \
@@ -105,15 +106,15 @@ typedef struct rc_ray {
   rc_u32 sample;                /* sample index within its parent, keys the random numbers */
   rc_u32 ambient_depth;         /* ambient bounces taken so far (Radiance's r->rlvl for -ab) */
   float cext_r, cext_g, cext_b; /* extinction per unit length of the medium it travels in */
-  rc_u32 tally;  /* host tally its contributions add to (the primary's slot unless the host
-                    splits the tree: hemisphere cells for -as, every ray in trace mode) */
-  rc_u32 clip;   /* antimatter: bit set of the clipped modifiers the ray is inside */
-  rc_u32 inside; /* antimatter: four signed 8-bit crossing counts (one per antimatter with a
-                    shading modifier) */
-  rc_u32 cell;   /* a hemisphere sample the host may super-sample: RC_CELL_* bits, else 0 */
-  float dist0;   /* length of the ray tree from the primary's start to this ray's origin (the
-                    sum of its ancestors' segments): patterns see T = (dist0 + t) x S, as
-                    Radiance's raydist() sums r->rot up the parent chain. 0 for a primary. */
+  rc_u32 tally;   /* host tally its contributions add to (the primary's slot unless the host
+                     splits the tree: hemisphere cells for -as, every ray in trace mode) */
+  rc_u32 clip;    /* antimatter: bit set of the clipped modifiers the ray is inside */
+  rc_u32 inside;  /* antimatter: four signed 8-bit crossing counts (one per antimatter with a
+                     shading modifier) */
+  rc_u32 cell;    /* a hemisphere sample the host may super-sample: RC_CELL_* bits, else 0 */
+  float dist0;    /* length of the ray tree from the primary's start to this ray's origin (the
+                     sum of its ancestors' segments): patterns see T = (dist0 + t) x S, as
+                     Radiance's raydist() sums r->rot up the parent chain. 0 for a primary. */
   rc_u32 medium;  /* where the scattering albedo of its medium comes from: RC_MEDIUM_GLOBAL
                      (-ma), RC_MEDIUM_CLEAR (none: inside a dielectric), else the args offset of a
                      mist's albedo (rgb) */
@@ -147,7 +148,9 @@ typedef struct rc_ray {
 typedef struct rc_hit {
   rc_float4 pos;  /* hit point (re-centred), w = distance t; t < 0 for a miss (then surface is
                      the distant source hit, if any) */
-  rc_float4 nrm;  /* unit geometric normal in Radiance's orientation (not flipped), w unused */
+  rc_float4 nrm;  /* unit geometric normal in Radiance's orientation (not flipped); w: the bits
+                     of the hit's list of cache records that failed the leak test (1 + its
+                     offset in the leak lists, 0: none; the host's leak test writes it) */
   rc_float4 uv;   /* x,y: triangle barycentrics or surface parameters; z,w: 0 from the host, set
                      by the kernels from the ray before patterns see the hit: the ray's dist0,
                      and of it the shadow segments (rc_shadow.sdist0) */
@@ -276,8 +279,9 @@ typedef struct rc_shadow {
                         its albedo's source (rc_ray.medium): it loses what is not scattered */
   rc_u32 primary;
   rc_u32 source; /* source index: the ray counts only if it reaches this source unblocked */
-  rc_u32 pad0;   /* -dt estimate records: the number of tested requests before it; a request:
-                    its ray's mist sources (rc_ray.slights), which mist boundaries change */
+  rc_u32 slights_or_tested; /* a request: its ray's mist sources (rc_ray.slights), which mist
+                               boundaries change; a -dt estimate record: the number of tested
+                               requests before it */
   rc_u32 crtype; /* the ambient/specular ancestry bits of the ray it leaves (shade.cl's RC_CR_*) */
   rc_u32 clip;   /* antimatter state of the surface point it leaves (as rc_ray) */
   rc_u32 inside;
@@ -285,6 +289,15 @@ typedef struct rc_shadow {
                    ray's hit distance, plus the shadow segments before this one (T) */
   float sdist0; /* of that, the shadow segments alone (Radiance's Ts: the shadow chain) */
 } rc_shadow;
+
+/* A shadow ray's state after a step (kernels/pipeline/shadow_step.cl; the host reads the
+ * status bits to find the rays that go on). */
+#define RC_SH_BLOCKED 0u
+#define RC_SH_REACHED 1u
+#define RC_SH_CONTINUE 2u /* through a transmitting surface: traced again from there */
+#define RC_SH_STATUS 3u   /* the bits above */
+#define RC_SH_BENT 4u     /* direction changed by refraction: the source must be re-checked */
+#define RC_SH_LATER 8u    /* not the first segment */
 
 /* Rendering settings the kernels read (from the -d*, -s*, -a*, -l* options). */
 #define RC_PF_DV 1u      /* -dv: sources visible to view rays */
@@ -315,8 +328,8 @@ typedef struct rc_params {
   rc_u32 pad1, pad2, pad3;
 } rc_params;
 
-/* An irradiance-cache record as the lookup kernel reads it (ambient-file.md §3; Radiance's
- * AMBVAL with its directions decoded). */
+/* An irradiance-cache record as the lookup kernel reads it (../shared/docs/radiance/ambient-file.md
+ * §3; Radiance's AMBVAL with its directions decoded). */
 typedef struct rc_amb_record {
   rc_float4 pos;  /* position (re-centred); w = weight */
   rc_float4 nrm;  /* unit normal; w = rad[0] */
@@ -389,87 +402,92 @@ typedef struct rc_rng_key {
  * are vector components on the device, which have no address: only its size is compared). */
 #define RADCL_LAYOUT_STRUCTS(S)                                                                    \
   S(rc_float4)                                                                                     \
-  S(rc_ray) S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror) S(rc_shadow)          \
-      S(rc_pattern) S(rc_rng_key) S(rc_params) S(rc_amb_record) S(rc_amb_node) S(rc_amb_hemi)      \
-          S(rc_amb_sample) S(rc_amb_made)
-#define RADCL_LAYOUT_FIELDS(F)                                                                                         \
-  F(rc_ray, org)                                                                                                       \
-  F(rc_ray, dir) F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags) F(                               \
-      rc_ray, sample) F(rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip)                      \
-      F(rc_ray, inside) F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, medium) F(rc_ray, gecc) F(rc_ray, slights) F(rc_hit, pos) F(                             \
-          rc_hit, nrm) F(rc_hit, uv) F(rc_hit, pert) F(rc_hit, surface) F(rc_hit, prim) F(rc_hit, source)                              \
-          F(rc_hit, front) F(rc_surface, material) F(rc_surface, type) F(rc_surface, source) F(                        \
-              rc_surface, object) F(rc_surface, flags) F(rc_surface, clip) F(rc_surface, slots)                        \
-              F(rc_surface, pad2) F(rc_material, type) F(rc_material, args) F(                                         \
-                  rc_material, nargs) F(rc_material, alt)                                                              \
-                  F(rc_material, patterns) F(rc_material, npatterns) F(rc_material, back) F(                           \
-                      rc_material, func) F(rc_pattern,                                                                 \
-                                           type) F(rc_pattern,                                                         \
-                                                   args) F(rc_pattern,                                                 \
-                                                           nargs) F(rc_pattern,                                        \
-                                                                    xform) F(rc_pattern, object)                       \
-                      F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(                        \
-                          rc_source, emit) F(rc_source, spot)                                                          \
-                          F(rc_source, kind) F(rc_source, flags) F(rc_source, surface) F(                              \
-                              rc_source,                                                                               \
-                              verts) F(rc_source,                                                                      \
-                                       nverts) F(rc_source, spot_focus)                                                \
-                              F(rc_source, parent) F(rc_source, mirror) F(rc_mirror, plane) F(                         \
-                                  rc_mirror,                                                                           \
-                                  centre) F(rc_mirror, refl)                                                           \
+  S(rc_ray)                                                                                        \
+  S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror) S(rc_shadow) S(rc_pattern)      \
+      S(rc_rng_key) S(rc_params) S(rc_amb_record) S(rc_amb_node) S(rc_amb_hemi) S(rc_amb_sample)   \
+          S(rc_amb_made)
+#define RADCL_LAYOUT_FIELDS(F)                                                                                             \
+  F(rc_ray, org)                                                                                                           \
+  F(rc_ray, dir)                                                                                                           \
+  F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags) F(rc_ray, sample) F(                                \
+      rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside)                          \
+      F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, medium) F(rc_ray, gecc) F(rc_ray, slights) F(                             \
+          rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, pert) F(rc_hit, surface)                                     \
+          F(rc_hit, prim) F(rc_hit, source) F(                                                                             \
+              rc_hit,                                                                                                      \
+              front) F(rc_surface,                                                                                         \
+                       material) F(rc_surface,                                                                             \
+                                   type) F(rc_surface,                                                                     \
+                                           source) F(rc_surface,                                                           \
+                                                     object) F(rc_surface,                                                 \
+                                                               flags) F(rc_surface, clip)                                  \
+              F(rc_surface, slots) F(rc_surface, pad2) F(rc_material, type) F(rc_material, args) F(                        \
+                  rc_material, nargs) F(rc_material, alt)                                                                  \
+                  F(rc_material, patterns) F(rc_material, npatterns) F(rc_material, back) F(                               \
+                      rc_material, func) F(rc_pattern,                                                                     \
+                                           type) F(rc_pattern,                                                             \
+                                                   args) F(rc_pattern,                                                     \
+                                                           nargs) F(rc_pattern,                                            \
+                                                                    xform) F(rc_pattern, object)                           \
+                      F(rc_source, pos) F(rc_source, axis) F(rc_source, su) F(rc_source, sv) F(                            \
+                          rc_source, emit) F(rc_source, spot)                                                              \
+                          F(rc_source, kind) F(rc_source, flags) F(rc_source, surface) F(                                  \
+                              rc_source,                                                                                   \
+                              verts) F(rc_source,                                                                          \
+                                       nverts) F(rc_source, spot_focus)                                                    \
+                              F(rc_source, parent) F(rc_source, mirror) F(rc_mirror, plane) F(                             \
+                                  rc_mirror,                                                                               \
+                                  centre) F(rc_mirror, refl)                                                               \
                                   F(rc_mirror, surface) F(rc_mirror, verts) F(rc_mirror, nverts) F(rc_mirror, redirect) F( \
-                                      rc_shadow, org) F(rc_shadow, dir)                                                \
-                                      F(rc_shadow, contrib) F(rc_shadow, cext) F(                                      \
-                                          rc_shadow,                                                                   \
-                                          primary) F(rc_shadow,                                                        \
-                                                     source) F(rc_shadow,                                              \
-                                                               pad0) F(rc_shadow, crtype)                              \
-                                          F(rc_shadow, clip) F(                                                        \
-                                              rc_shadow, inside) F(rc_shadow,                                          \
-                                                                   dist0) F(rc_shadow, sdist0)                         \
-                                              F(rc_rng_key, primary) F(rc_rng_key, sample) F(                          \
-                                                  rc_rng_key,                                                          \
-                                                  depth) F(rc_rng_key,                                                 \
-                                                           seed) F(rc_params,                                          \
-                                                                   av) F(rc_params, direct)                            \
-                                                  F(rc_params, spec) F(rc_params, seed) F(                             \
-                                                      rc_params, lr) F(rc_params,                                      \
-                                                                       flags) F(rc_params, ab)                         \
-                                                      F(rc_params, nsources) F(                                        \
-                                                          rc_params,                                                   \
-                                                          irradiance_material) F(rc_params, ad)                        \
-                                                          F(rc_params, as) F(rc_params, amb) F(rc_params, medium) F(rc_params, albedo) F(rc_params, mist) F(                        \
-                                                              rc_amb_record,                                           \
-                                                              pos) F(rc_amb_record,                                    \
-                                                                     nrm) F(rc_amb_record, udir)                       \
-                                                              F(rc_amb_record,                                         \
-                                                                val) F(rc_amb_record,                                  \
-                                                                       grad) F(rc_amb_node,                            \
-                                                                               lo) F(rc_amb_node,                      \
-                                                                                     hi) F(rc_amb_node, skip)          \
-                                                                  F(rc_amb_node, first) F(                             \
-                                                                      rc_amb_node,                                     \
-                                                                      count) F(rc_amb_node,                            \
-                                                                               bin) F(rc_amb_hemi, pos)                \
-                                                                      F(                                               \
-                                                                          rc_amb_hemi,                                 \
-                                                                          nrm) F(rc_amb_hemi,                          \
-                                                                                 ux) F(rc_amb_hemi,                    \
-                                                                                       uy) F(rc_amb_hemi,              \
-                                                                                             first)                    \
-                                                                          F(rc_amb_hemi, ns) F(                        \
-                                                                              rc_amb_hemi,                             \
-                                                                              level) F(rc_amb_hemi,                    \
-                                                                                       pad0)                           \
-                                                                              F(rc_amb_sample, val) F(                 \
-                                                                                  rc_amb_sample,                       \
-                                                                                  pnt) F(rc_amb_made,                  \
-                                                                                         corral)                       \
-                                                                                  F(rc_amb_made,                       \
-                                                                                    status)                            \
-                                                                                      F(rc_amb_made,                   \
-                                                                                        pad0)                          \
-                                                                                          F(rc_amb_made,               \
+                                      rc_shadow,                                                                           \
+                                      org) F(rc_shadow,                                                                    \
+                                             dir) F(rc_shadow, contrib)                                                    \
+                                      F(rc_shadow, cext) F(rc_shadow, primary) F(rc_shadow, source) F(                     \
+                                          rc_shadow,                                                                       \
+                                          slights_or_tested) F(rc_shadow,                                                  \
+                                                               crtype) F(rc_shadow, clip)                                  \
+                                          F(rc_shadow, inside) F(rc_shadow, dist0) F(rc_shadow, sdist0) F(                 \
+                                              rc_rng_key,                                                                  \
+                                              primary) F(rc_rng_key,                                                       \
+                                                         sample) F(rc_rng_key,                                             \
+                                                                   depth) F(rc_rng_key, seed)                              \
+                                              F(rc_params, av) F(rc_params, direct) F(                                     \
+                                                  rc_params, spec) F(rc_params, seed)                                      \
+                                                  F(rc_params, lr) F(rc_params, flags) F(rc_params, ab) F(                 \
+                                                      rc_params,                                                           \
+                                                      nsources) F(rc_params, irradiance_material)                          \
+                                                      F(rc_params, ad) F(rc_params, as) F(                                 \
+                                                          rc_params,                                                       \
+                                                          amb) F(rc_params,                                                \
+                                                                 medium) F(rc_params, albedo)                              \
+                                                          F(rc_params, mist) F(rc_amb_record, pos) F(                      \
+                                                              rc_amb_record,                                               \
+                                                              nrm) F(rc_amb_record,                                        \
+                                                                     udir) F(rc_amb_record,                                \
+                                                                             val) F(rc_amb_record, grad)                   \
+                                                              F(rc_amb_node, lo) F(rc_amb_node, hi) F(                     \
+                                                                  rc_amb_node,                                             \
+                                                                  skip) F(rc_amb_node, first)                              \
+                                                                  F(rc_amb_node, count) F(                                 \
+                                                                      rc_amb_node,                                         \
+                                                                      bin) F(rc_amb_hemi,                                  \
+                                                                             pos) F(rc_amb_hemi, nrm)                      \
+                                                                      F(rc_amb_hemi, ux) F(                                \
+                                                                          rc_amb_hemi,                                     \
+                                                                          uy) F(rc_amb_hemi, first)                        \
+                                                                          F(rc_amb_hemi, ns) F(                            \
+                                                                              rc_amb_hemi,                                 \
+                                                                              level) F(rc_amb_hemi,                        \
+                                                                                       pad0)                               \
+                                                                              F(rc_amb_sample, val) F(                     \
+                                                                                  rc_amb_sample,                           \
+                                                                                  pnt) F(rc_amb_made,                      \
+                                                                                         corral)                           \
+                                                                                  F(rc_amb_made,                           \
+                                                                                    status)                                \
+                                                                                      F(rc_amb_made,                       \
+                                                                                        pad0)                              \
+                                                                                          F(rc_amb_made,                   \
                                                                                             pad1)
 
 #endif /* RADCL_DEVICE_TYPES_H */

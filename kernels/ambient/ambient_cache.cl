@@ -1,9 +1,9 @@
-/* Irradiance-cache lookups (Radiance's sumambient and extambient, ambient-file.md §3): every
- * record whose disc region holds the point passes Radiance's level, direction, behind and
- * elliptical-radius tests, is extrapolated with its gradients and weighted by the product of
- * the two hat functions. The records sit under a BVH of their regions (built on the host with
- * Embree's builder, src/ambient/cache.cpp), walked without a stack: an inner node's
- * first child follows it, `skip` jumps past its subtree.
+/* Irradiance-cache lookups (Radiance's sumambient and extambient,
+ * ../shared/docs/radiance/ambient-file.md §3): every record whose disc region holds the point
+ * passes Radiance's level, direction, behind and elliptical-radius tests, is extrapolated with its
+ * gradients and weighted by the product of the two hat functions. The records sit under a BVH of
+ * their regions (built on the host with Embree's builder, src/ambient/cache.cpp), walked without a
+ * stack: an inner node's first child follows it, `skip` jumps past its subtree.
  *
  * Differences from Radiance: every accepted record is summed (Radiance's octree stops early
  * in a node whose children already weigh 0.05), the maximum angle is narrowed for low-weight

@@ -1,6 +1,6 @@
 /* Making an irradiance-cache record from one sampled hemisphere, as Radiance 5's doambient does
- * once the samples are in (docs/cache-internals.md, "Making a record"): the record's value is the mean
- * of the strata; the Hessian of the irradiance (Schwarzhaupt, Jensen & Jarosz 2012) over the
+ * once the samples are in (docs/cache-internals.md, "Making a record"): the record's value is the
+ * mean of the strata; the Hessian of the irradiance (Schwarzhaupt, Jensen & Jarosz 2012) over the
  * triangle mesh of the strata's hit points gives the two radii and the u axis, the same mesh's
  * form-factor gradient the translational gradient, the tangents of the sample directions the
  * rotational gradient, and the perimeter samples the corral bits. A program root of its own:
@@ -9,14 +9,11 @@
  * The hemisphere's frame: x along ux, y along uy, z along the normal. Everything below works in
  * that frame, so the Hessian is only ever needed as its 2x2 tangential block. */
 #include "radcl/device_types.h"
+#include "radcl/luminance.h"
 
 #define RC_AMR_FTINY 1e-6f
 #define RC_AMR_MINADIV 7u
 #define RC_AMR_AVGREFL 0.5f
-
-static inline float rc_amr_bright(float3 c) {
-  return 0.265074126f * c.x + 0.670114631f * c.y + 0.064811243f * c.z;
-}
 
 /* Radiance's atan2a: a polynomial arctangent with values in [-pi/2, 3pi/2); the corral's sector
  * bits follow its values, so it is reproduced rather than replaced by atan2. */
@@ -80,7 +77,7 @@ static void rc_amr_edge(float3 r0, float3 r1, float3 e, float2* grad, float3* he
 
 /* A stratum's relative brightness, Radiance's normalised Y. */
 static inline float rc_amr_y(global const rc_amb_sample* s, uint k, float scale, float floor_) {
-  return rc_amr_bright(s[k].val.xyz) * scale + floor_;
+  return rc_bright(s[k].val.xyz) * scale + floor_;
 }
 
 /* The weight of a mesh triangle: the relative brightness of its farthest vertex (ties go to
@@ -219,9 +216,9 @@ static uint rc_amr_corral(const rc_amr_frame* f, global const rc_amb_sample* s, 
  * falls back on the geometric Hessian (Y = 1 everywhere), with no gradients (its corral bits are
  * made: below). Returns whether the hemisphere is lit. */
 static bool rc_amr_scale(float3 sum, uint ns, float* sc, float* fl) {
-  float bs = RC_AMR_AVGREFL * rc_amr_bright(sum); /* Radiance's bright(rcol) */
+  float bs = RC_AMR_AVGREFL * rc_bright(sum); /* Radiance's bright(rcol) */
   bool lit = bs > RC_AMR_FTINY;
-  *sc = lit ? 0.99f * (float)(ns * ns) / rc_amr_bright(sum) : RC_AMR_AVGREFL * bs;
+  *sc = lit ? 0.99f * (float)(ns * ns) / rc_bright(sum) : RC_AMR_AVGREFL * bs;
   *fl = lit ? 0.01f : 1.0f;
   return lit;
 }

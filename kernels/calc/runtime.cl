@@ -1,6 +1,7 @@
 /* Support for code generated from .cal files (src/calc/codegen.cpp): Radiance's arithmetic
- * error rules (a non-finite result becomes 0 and raises an error bit, calc-language.md §3.2),
- * its rand(), arg() and the shared noise functions. */
+ * error rules (a non-finite result becomes 0 and raises an error bit,
+ * ../shared/docs/radiance/calc-language.md §3.2), its rand(), arg() and the shared noise functions.
+ */
 #include "radcl/calc/device_context.h"
 #include "radcl/device_types.h" /* RC_NOINLINE */
 /* Empty: PoCL's compile time grows exponentially with unrolled recursion marked noinline. */

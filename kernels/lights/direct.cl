@@ -11,9 +11,9 @@
  *
  * Slots: a hit reserves one per candidate plus one for the estimate (count mode cannot know how
  * many will be tested), except with two candidates or fewer, which are always all tested. The
- * tested requests come first, then the estimate (source RC_NONE, pad0 = number of tested requests
- * before it), then empty records (source RC_NONE, pad0 0, contribution 0) that are neither traced
- * nor added. */
+ * tested requests come first, then the estimate (source RC_NONE, slights_or_tested = number of
+ * tested requests before it), then empty records (source RC_NONE, slights_or_tested 0,
+ * contribution 0) that are neither traced nor added. */
 
 struct rc_brdf;
 #ifdef RADCL_HAS_FUNC_MATERIALS
@@ -111,10 +111,10 @@ static void rc_direct_select(global rc_shadow* g, uint n, float known, const rc_
   rc_shadow e = g[0];
   e.contrib = (float4)(rest, 0.0f);
   e.source = RC_NONE;
-  e.pad0 = nt;
+  e.slights_or_tested = nt;
   g[nt] = e;
   e.contrib = (float4)(0.0f);
-  e.pad0 = 0u;
+  e.slights_or_tested = 0u;
   for (uint k = nt + 1u; k <= n; ++k)
     g[k] = e;
 }

@@ -1,9 +1,9 @@
-/* antimatter (scene-format.md §3.16): a closed volume inside which surfaces of the listed
- * modifiers are invisible. A ray carries the set of clipped modifiers it is inside (rc_ray.clip,
- * one bit per modifier the scene's antimatters list) and, for each antimatter that shades its
- * boundary with a material (mod1), a count of how often its ancestry crossed a listed surface
- * by transmission: in through a front side +1, out through a back side -1 (rc_ray.inside, four
- * signed bytes). Arguments as the scene compiler writes them: the list's bits as two 16-bit
+/* antimatter (../shared/docs/radiance/scene-format.md §3.16): a closed volume inside which surfaces
+ * of the listed modifiers are invisible. A ray carries the set of clipped modifiers it is inside
+ * (rc_ray.clip, one bit per modifier the scene's antimatters list) and, for each antimatter that
+ * shades its boundary with a material (mod1), a count of how often its ancestry crossed a listed
+ * surface by transmission: in through a front side +1, out through a back side -1 (rc_ray.inside,
+ * four signed bytes). Arguments as the scene compiler writes them: the list's bits as two 16-bit
  * halves (floats hold integers exactly only up to 2^24), then the counter slot (-1: none).
  * rc_material.alt is mod1's material (RC_NONE: the boundary is invisible). */
 

@@ -1,13 +1,13 @@
-/* The BRDF materials (scene-format.md §3.11, §3.12; Radiance's m_brdf.c): plasfunc, metfunc,
- * transfunc, plasdata, metdata, transdata and BRTDfunc. This part (included by direct.cl) sets
- * up a hit and gives the direct coefficient of one source sample; materials/brdf_shade.cl
- * shades. Each material has a function record (rc_material.func) in the pattern buffer: its
- * real arguments, its transform (patterns.cl's 25 floats) and then a descriptor, integers as
- * float bits (src/render/compile/func_materials.cpp):
- *   func and data materials: flags, function (rc_brdf_call), data offset or RC_NONE, n,
- *     n coordinate functions (rc_brdf_call);
- *   BRTDfunc: flags (bit 0: direct part even without diffuse), 6 coefficient expressions
- *     (rc_pattern_call: reflection rgb, transmission rgb), 3 functions (RC_NONE: literal 0). */
+/* The BRDF materials (../shared/docs/radiance/scene-format.md §3.11, §3.12; Radiance's m_brdf.c):
+ * plasfunc, metfunc, transfunc, plasdata, metdata, transdata and BRTDfunc. This part (included by
+ * direct.cl) sets up a hit and gives the direct coefficient of one source sample;
+ * materials/brdf_shade.cl shades. Each material has a function record (rc_material.func) in the
+ * pattern buffer: its real arguments, its transform (patterns.cl's 25 floats) and then a
+ * descriptor, integers as float bits (src/render/compile/func_materials.cpp): func and data
+ * materials: flags, function (rc_brdf_call), data offset or RC_NONE, n, n coordinate functions
+ * (rc_brdf_call); BRTDfunc: flags (bit 0: direct part even without diffuse), 6 coefficient
+ * expressions (rc_pattern_call: reflection rgb, transmission rgb), 3 functions (RC_NONE: literal
+ * 0). */
 
 #include "materials/raynormal.cl"
 
@@ -28,7 +28,8 @@ static inline int rc_brdf_is_trans(uint t) {
 
 /* The function record's environment for a ray of direction d meeting h, the normal seen as
  * ron (flipped toward the ray for the func and data materials, as the hit's for BRTDfunc), plus
- * the material variables NxP NyP NzP RdotP CrP CgP CbP (calc-language.md §5.2). */
+ * the material variables NxP NyP NzP RdotP CrP CgP CbP (../shared/docs/radiance/calc-language.md
+ * §5.2). */
 static void rc_brdf_env(const rc_scene_args* S, rc_brdf* b, const rc_material* m, float3 d,
                         const rc_hit* h, float3 ron) {
   rc_pattern pt = S->patterns[m->func];

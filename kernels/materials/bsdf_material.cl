@@ -1,7 +1,8 @@
-/* The BSDF and aBSDF materials at a hit (scene-format.md §3.13, Radiance's m_bsdf): the local
- * frame from the normal and the up vector, the Lambertian parts with the real arguments, the
- * projected-solid-angle queries that size Radiance's jitter, aBSDF's "through" peak, and the
- * direct coefficient of a source sample. Included by direct.cl; materials/bsdf_shade.cl shades.
+/* The BSDF and aBSDF materials at a hit (../shared/docs/radiance/scene-format.md §3.13, Radiance's
+ * m_bsdf): the local frame from the normal and the up vector, the Lambertian parts with the real
+ * arguments, the projected-solid-angle queries that size Radiance's jitter, aBSDF's "through" peak,
+ * and the direct coefficient of a source sample. Included by direct.cl; materials/bsdf_shade.cl
+ * shades.
  *
  * As Radiance, every query passes the vector towards the viewer as the BSDF's incident vector
  * (reciprocity), so `in` below is the view side and `out` the light's or the sample's.

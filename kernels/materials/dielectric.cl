@@ -1,7 +1,8 @@
 /* dielectric (and the shared part of interface): refraction with Fresnel, total internal
- * reflection, and the media the rays travel in (scene-format.md §3.4-3.5). A ray carries the
- * extinction of its medium; a hit on the inside of a dielectric sets the arriving ray's own
- * medium (as Radiance sets r->cext there), the refracted ray gets the medium it enters. */
+ * reflection, and the media the rays travel in (../shared/docs/radiance/scene-format.md §3.4-3.5).
+ * A ray carries the extinction of its medium; a hit on the inside of a dielectric sets the arriving
+ * ray's own medium (as Radiance sets r->cext there), the refracted ray gets the medium it enters.
+ */
 #ifndef RC_DIELECTRIC_CL
 #define RC_DIELECTRIC_CL
 

@@ -1,6 +1,7 @@
-/* glass: a thin pane as one surface (scene-format.md §3.3). The arguments are transmissivities
- * tn (one pass through the pane at normal incidence); the pane's reflectance and transmittance
- * sum the series of internal reflections, per polarisation, with Fresnel at each face. */
+/* glass: a thin pane as one surface (../shared/docs/radiance/scene-format.md §3.3). The arguments
+ * are transmissivities tn (one pass through the pane at normal incidence); the pane's reflectance
+ * and transmittance sum the series of internal reflections, per polarisation, with Fresnel at each
+ * face. */
 #ifndef RC_GLASS_CL
 #define RC_GLASS_CL
 

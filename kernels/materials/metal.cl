@@ -1,4 +1,5 @@
-/* metal: specular reflection coloured by the material (scene-format.md §3.1). */
+/* metal: specular reflection coloured by the material (../shared/docs/radiance/scene-format.md
+ * §3.1). */
 #include "materials/ward_iso.cl"
 
 static inline rc_ward_iso rc_metal_setup(float3 color, float spec, float rough, float cos1) {

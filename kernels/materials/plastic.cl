@@ -1,4 +1,5 @@
-/* plastic: uncoloured specular highlight over a coloured diffuse base (scene-format.md §3.1). */
+/* plastic: uncoloured specular highlight over a coloured diffuse base
+ * (../shared/docs/radiance/scene-format.md §3.1). */
 #include "materials/ward_iso.cl"
 
 /* color = (A1,A2,A3) x pattern colour, cos1 = -d.n of the incoming ray. */

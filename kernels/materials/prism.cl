@@ -1,10 +1,10 @@
-/* prism1 and prism2 (scene-format.md §3.10; Radiance's m_direct): light-redirecting surfaces
- * whose function file gives, for a ray's direction, a coefficient and a new direction (prism1
- * one such pair, prism2 two). A ray meeting one goes on as one or two transmitted rays; a
- * shadow ray aimed at one of its virtual sources (src/render/lights/virtual_sources.cpp) goes on in the
- * redirection toward the source imaged. The record (rc_material::func) holds the expressions
- * after its transform: x[25] flags, x[26 + 4 k ..] coefficient and direction of redirection k.
- * Included by shade_material.cl. */
+/* prism1 and prism2 (../shared/docs/radiance/scene-format.md §3.10; Radiance's m_direct):
+ * light-redirecting surfaces whose function file gives, for a ray's direction, a coefficient and a
+ * new direction (prism1 one such pair, prism2 two). A ray meeting one goes on as one or two
+ * transmitted rays; a shadow ray aimed at one of its virtual sources
+ * (src/render/lights/virtual_sources.cpp) goes on in the redirection toward the source imaged. The
+ * record (rc_material::func) holds the expressions after its transform: x[25] flags, x[26 + 4 k ..]
+ * coefficient and direction of redirection k. Included by shade_material.cl. */
 #ifndef RADCL_MATERIALS_PRISM_CL
 #define RADCL_MATERIALS_PRISM_CL
 

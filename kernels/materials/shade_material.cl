@@ -1,7 +1,8 @@
 /* Shading a hit by its material: emission, the normal materials (plastic, metal, trans and
  * their patterns), glass and dielectrics, media. Included by shade.cl after hemisphere.cl. */
 
-/* Visible emission of a light-type material toward the ray (scene-format.md §3.6). */
+/* Visible emission of a light-type material toward the ray (../shared/docs/radiance/scene-format.md
+ * §3.6). */
 RC_NOINLINE
 static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, const rc_ray* r,
                                 const rc_hit* h) {
@@ -32,8 +33,8 @@ static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, co
   return rad;
 }
 
-#include "materials/raynormal.cl"
 #include "lights/direct.cl"
+#include "materials/raynormal.cl"
 #ifdef RADCL_HAS_MIST
 #include "pipeline/mist.cl"
 #endif
@@ -50,9 +51,9 @@ static inline void rc_pass(rc_out* o, const rc_ray* r, const rc_hit* h, const rc
 }
 
 /* One try at a direction in a Gaussian lobe of widths au (along u) and av (along v) about
- * `axis` (scene-format.md §3.1 step 8 and its transmitted twin; anisotropic as §3.3); reflect:
- * the sample is a half vector. Returns 0 for a direction on the wrong side, which Radiance
- * rejects. */
+ * `axis` (../shared/docs/radiance/scene-format.md §3.1 step 8 and its transmitted twin; anisotropic
+ * as §3.3); reflect: the sample is a half vector. Returns 0 for a direction on the wrong side,
+ * which Radiance rejects. */
 static inline int rc_gauss_try(float3 d, float3 n, float3 axis, float3 u, float3 v, float au,
                                float av, int reflect, const rc_params* P, rc_rng_key key, uint dim,
                                float3* dir) {
@@ -381,6 +382,82 @@ static inline int rc_transparent(uint type) {
          type == RC_OBJ_INTERFACE || type == RC_OBJ_MIST;
 }
 
+#ifdef RADCL_HAS_MIRROR
+/* A mirror's front reflects (its back is black). */
+static void rc_shade_mirror(const rc_scene_args* S, rc_out* o, const rc_material* mp, rc_ray* rp,
+                            const rc_hit* hp, float3 n, rc_rng_key key) {
+  const rc_params* P = &S->params;
+  rc_material mat = *mp;
+  rc_ray r = *rp;
+  rc_hit h = *hp;
+  if (!h.front) return; /* the back of a mirror is black */
+  global const float* a = S->args + mat.args;
+  float3 c = (float3)(a[0], a[1], a[2]) * o->pcol;
+  float3 d = r.dir.xyz;
+  float3 dir = d + 2.0f * -dot(d, n) * n;
+  /* As m_mirror: a texture (but for ambient rays) tilts the reflection, unless it would go
+   * into the surface, and either way ends rtrace's mirrored length at the surface. */
+  int tilted = rc_has_texture(o->pert) && !(rc_crtype(r.flags) & RC_CR_AMBIENT);
+  if (tilted) {
+    float3 pn;
+    float pdot = rc_raynormal(n, o->pert, d, -dot(d, n), &pn);
+    float3 t = d + 2.0f * pdot * pn;
+    if (dot(t, n) > RC_FTINY) dir = normalize(t);
+  }
+  uint before = o->nspawn;
+  rc_spawn(o, &r, h.pos.xyz, dir, c, RC_RAY_REFLECTED, P->spec.z, P, key, 8, r.ambient_depth);
+  if (tilted) rc_relabel_child(o, before, RC_RAY_TILTED, 0u);
+}
+#endif
+
+/* Shades a hit on the side it faces (`n`, flipped to face the ray) by the material's kind. */
+static void rc_shade_kind(const rc_scene_args* S, rc_out* o, const rc_material* mat, rc_ray* r,
+                          rc_hit* h, float3 n, int flat, rc_rng_key key) {
+  switch (mat->type) {
+  case RC_OBJ_PLASTIC:
+  case RC_OBJ_METAL:
+  case RC_OBJ_TRANS:
+    rc_shade_normal(S, o, mat, r, h, n, flat, key);
+    break;
+#ifdef RADCL_HAS_GLASS
+  case RC_OBJ_GLASS:
+    rc_shade_glass(S, o, mat, r, h, n, key);
+    break;
+#endif
+#ifdef RADCL_HAS_ANISO
+  case RC_OBJ_PLASTIC2:
+  case RC_OBJ_METAL2:
+  case RC_OBJ_TRANS2:
+  case RC_OBJ_ASHIK2:
+    rc_shade_aniso(S, o, mat, r, h, n, flat, key);
+    break;
+#endif
+#ifdef RADCL_HAS_FUNC_MATERIALS
+  case RC_OBJ_PLASFUNC:
+  case RC_OBJ_METFUNC:
+  case RC_OBJ_TRANSFUNC:
+  case RC_OBJ_PLASDATA:
+  case RC_OBJ_METDATA:
+  case RC_OBJ_TRANSDATA:
+    rc_shade_brdf2(S, o, mat, r, h, n, key);
+    break;
+#endif
+#ifdef RADCL_HAS_BSDF_MATERIALS
+  case RC_OBJ_BSDF:
+  case RC_OBJ_ABSDF:
+    rc_shade_bsdf(S, o, mat, r, h, key);
+    break;
+#endif
+#ifdef RADCL_HAS_MIRROR
+  case RC_OBJ_MIRROR:
+    rc_shade_mirror(S, o, mat, r, h, n, key);
+    break;
+#endif
+  default:
+    break;
+  }
+}
+
 /* Shades a hit with material `mat` (after the surface's visibility and antimatter rules). */
 RC_NOINLINE
 static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h,
@@ -482,64 +559,5 @@ static void rc_shade_material(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hi
     n = -n;
   }
 
-  switch (mat.type) {
-  case RC_OBJ_PLASTIC:
-  case RC_OBJ_METAL:
-  case RC_OBJ_TRANS:
-    rc_shade_normal(S, o, &mat, &r, &h, n, flat, key);
-    break;
-#ifdef RADCL_HAS_GLASS
-  case RC_OBJ_GLASS:
-    rc_shade_glass(S, o, &mat, &r, &h, n, key);
-    break;
-#endif
-#ifdef RADCL_HAS_ANISO
-  case RC_OBJ_PLASTIC2:
-  case RC_OBJ_METAL2:
-  case RC_OBJ_TRANS2:
-  case RC_OBJ_ASHIK2:
-    rc_shade_aniso(S, o, &mat, &r, &h, n, flat, key);
-    break;
-#endif
-#ifdef RADCL_HAS_FUNC_MATERIALS
-  case RC_OBJ_PLASFUNC:
-  case RC_OBJ_METFUNC:
-  case RC_OBJ_TRANSFUNC:
-  case RC_OBJ_PLASDATA:
-  case RC_OBJ_METDATA:
-  case RC_OBJ_TRANSDATA:
-    rc_shade_brdf2(S, o, &mat, &r, &h, n, key);
-    break;
-#endif
-#ifdef RADCL_HAS_BSDF_MATERIALS
-  case RC_OBJ_BSDF:
-  case RC_OBJ_ABSDF:
-    rc_shade_bsdf(S, o, &mat, &r, &h, key);
-    break;
-#endif
-#ifdef RADCL_HAS_MIRROR
-  case RC_OBJ_MIRROR: {
-    if (!h.front) break; /* the back of a mirror is black */
-    global const float* a = S->args + mat.args;
-    float3 c = (float3)(a[0], a[1], a[2]) * o->pcol;
-    float3 d = r.dir.xyz;
-    float3 dir = d + 2.0f * -dot(d, n) * n;
-    /* As m_mirror: a texture (but for ambient rays) tilts the reflection, unless it would go
-     * into the surface, and either way ends rtrace's mirrored length at the surface. */
-    int tilted = rc_has_texture(o->pert) && !(rc_crtype(r.flags) & RC_CR_AMBIENT);
-    if (tilted) {
-      float3 pn;
-      float pdot = rc_raynormal(n, o->pert, d, -dot(d, n), &pn);
-      float3 t = d + 2.0f * pdot * pn;
-      if (dot(t, n) > RC_FTINY) dir = normalize(t);
-    }
-    uint before = o->nspawn;
-    rc_spawn(o, &r, h.pos.xyz, dir, c, RC_RAY_REFLECTED, P->spec.z, P, key, 8, r.ambient_depth);
-    if (tilted) rc_relabel_child(o, before, RC_RAY_TILTED, 0u);
-    break;
-  }
-#endif
-  default:
-    break;
-  }
+  rc_shade_kind(S, o, &mat, &r, &h, n, flat, key);
 }

@@ -1,6 +1,6 @@
-/* trans: thin translucent surface (scene-format.md §3.2). Reflection as plastic with
- * rho_d = 1 - tau - s'; transmission tau = trans (1 - s') split into a clear part tau_s and a
- * diffuse part tau_d, both coloured by the material. */
+/* trans: thin translucent surface (../shared/docs/radiance/scene-format.md §3.2). Reflection as
+ * plastic with rho_d = 1 - tau - s'; transmission tau = trans (1 - s') split into a clear part
+ * tau_s and a diffuse part tau_d, both coloured by the material. */
 #include "materials/ward_iso.cl"
 
 /* a = the 7 real arguments, color = (a0,a1,a2) x pattern, cos1 = -d.n with n facing the ray. */

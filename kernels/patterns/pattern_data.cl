@@ -1,6 +1,7 @@
-/* brightdata, colordata, texdata and colorpict (scene-format.md §4, §4.1): data sets packed by
- * the host (include/radcl/render/compile/pattern_data.h), interpolated at coordinates computed by the
- * pattern's expressions, then passed through its functions (rc_pattern_fcall). */
+/* brightdata, colordata, texdata and colorpict (../shared/docs/radiance/scene-format.md §4, §4.1):
+ * data sets packed by the host (include/radcl/render/compile/pattern_data.h), interpolated at
+ * coordinates computed by the pattern's expressions, then passed through its functions
+ * (rc_pattern_fcall). */
 
 #define RC_DATA_MAXDIM 5
 

@@ -1,7 +1,7 @@
-/* Patterns and textures (scene-format.md §4): the ray variables of calc-language.md §5.1 in
- * each pattern's function coordinates, then its generated expressions through the scene's
- * dispatcher rc_pattern_call(). A compute error leaves the colour (or normal) unchanged, as
- * Radiance does after its warning. */
+/* Patterns and textures (../shared/docs/radiance/scene-format.md §4): the ray variables of
+ * ../shared/docs/radiance/calc-language.md §5.1 in each pattern's function coordinates, then its
+ * generated expressions through the scene's dispatcher rc_pattern_call(). A compute error leaves
+ * the colour (or normal) unchanged, as Radiance does after its warning. */
 
 #ifdef RADCL_HAS_PATTERN_DATA
 #include "patterns/pattern_data.cl"

@@ -1,5 +1,6 @@
-/* brighttext, colortext and mixtext (scene-format.md §4, §4.2): whether a hit lies inside a
- * glyph of the pattern's text, laid out by the host (include/radcl/render/compile/text_pattern.h). */
+/* brighttext, colortext and mixtext (../shared/docs/radiance/scene-format.md §4, §4.2): whether a
+ * hit lies inside a glyph of the pattern's text, laid out by the host
+ * (include/radcl/render/compile/text_pattern.h). */
 
 /* Whether (x, y), in glyph units of a 256 x 256 cell, is inside glyph g: the glyph's extent,
  * then the parity of the edges crossed by a ray along +x. Edges are taken to straddle the

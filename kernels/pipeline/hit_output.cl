@@ -118,10 +118,10 @@ static inline void rc_emit_shadow_from(rc_out* o, float4 org, float3 dir, float 
     /* The medium the shadow ray starts in (rc_shadow_ext: what it loses). */
 #ifdef RADCL_HAS_MEDIUM
     s.cext = (float4)(o->cext, as_float(o->medium));
-    s.pad0 = o->slights;
+    s.slights_or_tested = o->slights;
 #else
     s.cext = (float4)(o->cext, as_float(RC_MEDIUM_CLEAR));
-    s.pad0 = 0;
+    s.slights_or_tested = 0;
 #endif
     s.crtype = rc_crtype(r->flags) & (RC_CR_AMBIENT | RC_CR_SPECULAR);
     s.dist0 = dist0;

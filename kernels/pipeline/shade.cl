@@ -7,10 +7,11 @@
  * Its parts: hit_output.cl (where a hit writes), hemisphere.cl (indirect samples),
  * direct.cl (source samples), shade_material.cl (materials), shadow_step.cl (shadow rays
  * through transmitting surfaces), this file (the ray's dispatch and the kernels). */
-#include "radcl/device_types.h"
-#include "radcl/rng.h"
 #include "lights/sources.cl"
 #include "lights/virtual.cl"
+#include "radcl/device_types.h"
+#include "radcl/luminance.h"
+#include "radcl/rng.h"
 
 /* The scene's material modules, after the shared types they use. */
 #include "generated.cl"
@@ -59,9 +60,6 @@ static inline float2 rc_sample2(const rc_params* P, rc_rng_key key, uint dim) {
   return (float2)(a, b);
 }
 
-static inline float rc_bright(float3 c) {
-  return 0.265074126f * c.x + 0.670114631f * c.y + 0.064811243f * c.z;
-}
 static inline float rc_max3(float3 c) {
   return fmax(c.x, fmax(c.y, c.z));
 }
@@ -248,8 +246,8 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
                      global rc_shadow* shadows, global rc_ray* spawned, global float4* immediate,
                      uint super_mode, global const uint* super_offset,
                      global const uint* super_data, uint cap_shadow, uint cap_spawn,
-                     global uint* nshadow, global uint* nspawn, global uchar* cells,
-                     uint retally, global const uint* tallies) {
+                     global uint* nshadow, global uint* nspawn, global uchar* cells, uint retally,
+                     global const uint* tallies) {
   uint i = get_global_id(0);
   if (i >= n) return;
   RC_SCENE_INIT
@@ -340,9 +338,9 @@ kernel void rc_accumulate(global const float4* immediate, global const uint* sha
       if (!blocked[k]) sum += c;
       continue;
     }
-    /* The estimate for untested samples (direct.cl), at the tested ones' hit ratio: pad0 is
-     * the count of tested requests before it. */
-    uint nt = shadows[k].pad0, hits = 0;
+    /* The estimate for untested samples (direct.cl), at the tested ones' hit ratio: its
+     * slights_or_tested is the count of tested requests before it. */
+    uint nt = shadows[k].slights_or_tested, hits = 0;
     for (uint j = k - nt; j < k; ++j)
       hits += !blocked[j];
     if (nt > 0u) sum += c * ((float)hits / (float)nt);

@@ -6,6 +6,7 @@
 #include <new>
 
 #include "radcl/ambient/dircode.h"
+#include "radcl/luminance.h"
 #include "radcl/util/error.h"
 
 namespace radcl::ambient {
@@ -259,9 +260,6 @@ void rejoin_ambient_caches(AmbientCacheBuffers& ab, std::size_t a_nodes, std::si
 
 std::array<double, 3> averaged_ambient_value(const std::array<double, 3>& av, int aw,
                                              std::span<const ambient::AmbientRecord> records) {
-  auto bright = [](double r, double g, double b) {
-    return 0.265074126 * r + 0.670114631 * g + 0.064811243 * b;
-  };
   if (aw <= 0) return av;
   double sum = 0;
   std::size_t n = 0;

@@ -1,5 +1,5 @@
-// Recursive-descent parser for .cal text (calc-language.md §1-§3), folding constants at parse
-// time by Radiance's rules (§3.3).
+// Recursive-descent parser for .cal text (../shared/docs/radiance/calc-language.md §1-§3), folding
+// constants at parse time by Radiance's rules (§3.3).
 #include <cctype>
 #include <cstdlib>
 #include <string>

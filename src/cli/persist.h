@@ -1,8 +1,8 @@
-// Persistent rtrace/rpict (-P file, -PP file; cli-rtrace-rpict.md §3.9, protocol in
-// docs/internals.md, docs/drop-in.md). The first invocation serves its own input and then starts a server: the
-// same binary re-executed in a hidden mode, which loads the scene itself (OpenCL state does not
-// survive fork(), so a process that has initialised it is never forked) and waits for later
-// invocations to attach through named pipes listed in the control file.
+// Persistent rtrace/rpict (-P file, -PP file; ../shared/docs/radiance/cli-rtrace-rpict.md §3.9,
+// protocol in docs/internals.md, docs/drop-in.md). The first invocation serves its own input and
+// then starts a server: the same binary re-executed in a hidden mode, which loads the scene itself
+// (OpenCL state does not survive fork(), so a process that has initialised it is never forked) and
+// waits for later invocations to attach through named pipes listed in the control file.
 #pragma once
 
 #include <functional>

@@ -5,6 +5,7 @@
 #include <ctime>
 #include <unistd.h>
 
+#include "pipeline_tuning.h"
 #include "radcl/ambient/ambient_file.h"
 #include "radcl/ambient/cache.h"
 #include "radcl/ambient/format.h"
@@ -51,6 +52,7 @@ render::RenderSettings render_settings(const options::RenderOptions& r) {
   // one, so the settings are refused before any output.
   if (s.lr <= 0 && s.lw <= 0) throw FatalError("zero ray weight in Russian roulette");
   s.irradiance_i = r.irradiance;
+  s.tuning = tuning_from_environment();
   s.seed =
       r.uncorrelated ? static_cast<std::uint32_t>(std::time(nullptr) ^ (::getpid() << 16)) : 0u;
   // RADCL_SEED fixes -u+'s seed, so independent renders can be repeated (tests, averaging).

@@ -1,4 +1,5 @@
-// The rendering options both front ends share (cli-rtrace-rpict.md §2) as renderer settings.
+// The rendering options both front ends share (../shared/docs/radiance/cli-rtrace-rpict.md §2) as
+// renderer settings.
 #pragma once
 
 #include <memory>

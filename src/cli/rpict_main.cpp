@@ -1,7 +1,7 @@
 // rpict: renders a view of a scene to a picture with Radiance's options, header and sampling
-// (cli-rtrace-rpict.md §4, picture-format.md §6), written as it grows; other formats by
-// extension (.exr, .tif, .png). -S renders a sequence of views read from standard input,
-// -P/-PP leave a persistent server behind (persist.h).
+// (../shared/docs/radiance/cli-rtrace-rpict.md §4, ../shared/docs/radiance/picture-format.md §6),
+// written as it grows; other formats by extension (.exr, .tif, .png). -S renders a sequence of
+// views read from standard input, -P/-PP leave a persistent server behind (persist.h).
 #include <cctype>
 #include <cerrno>
 #include <cstdio>

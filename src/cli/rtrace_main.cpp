@@ -1,5 +1,6 @@
 // rtrace: traces rays read from standard input through a scene and writes what -o asks for,
-// with Radiance's options, formats, header and flushing rules (cli-rtrace-rpict.md §3).
+// with Radiance's options, formats, header and flushing rules
+// (../shared/docs/radiance/cli-rtrace-rpict.md §3).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,9 +22,11 @@
 #include "persist.h"
 #include "radcl/device/context.h"
 #include "radcl/geometry/scene_geometry.h"
+#include "radcl/luminance.h"
 #include "radcl/options/ray_io.h"
 #include "radcl/options/rtrace_options.h"
 #include "radcl/render/compile/compiled_scene.h"
+#include "radcl/render/compile/material_traits.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/scene/loader.h"
 #include "radcl/scene/raypath.h"
@@ -300,28 +303,13 @@ private:
     // Seen through glass (or a flat dielectric), the unmirrored image lies behind it: the
     // transmitted rays' lengths add, as Radiance's m_glass/m_dielectric set rxt.
     if (r.hit && r.through_t >= 0 && r.surface < cs.surfaces.size()) {
-      std::uint32_t m = cs.surfaces[r.surface].material;
-      rc_object_type mt = m < cs.materials.size()
-                              ? static_cast<rc_object_type>(cs.materials[m].type)
-                              : RC_OBJ_PLASTIC;
-      bool through =
-          mt == RC_OBJ_GLASS || (flat && (mt == RC_OBJ_DIELECTRIC || mt == RC_OBJ_INTERFACE));
-      // trans: when its pure specular transmission outweighs the diffuse parts (m_normal).
-      if (mt == RC_OBJ_TRANS && cs.materials[m].nargs >= 7) {
-        const float* a = cs.args.data() + cs.materials[m].args;
-        double rspec = a[3], trans = a[5] * (1.0 - rspec), tspec = trans * a[6];
-        double tdiff = trans - tspec, rdiff = 1.0 - trans - rspec;
-        through = a[4] <= 1e-6 && tspec > tdiff + rdiff;
-      }
-      if (through) o.unmirrored_length = o.effective_length = r.t + r.through_t;
+      if (render::seen_through(cs, cs.surfaces[r.surface].material, flat))
+        o.unmirrored_length = o.effective_length = r.t + r.through_t;
     }
     if (r.hit && r.mirror_t >= 0) {
       // A flat mirror's image lies behind it (the reflected ray's length adds); a curved one's
       // is taken at the surface, as Radiance's m_normal/m_glass do.
       o.mirrored_length = r.t + (flat ? r.mirror_t : 0.0);
-      auto bright = [](const options::Vec3& c) {
-        return 0.265074126 * c[0] + 0.670114631 * c[1] + 0.064811243 * c[2];
-      };
       if (bright(o.mirrored) > 0.5 * bright(o.value)) o.effective_length = o.mirrored_length;
     }
     o.derive_unmirrored();

@@ -1,8 +1,8 @@
 // Argument counts per primitive type. Radiance checks these only when a primitive is used
 // (oconv for surfaces, rtrace/rpict when a modifier is first evaluated); radcl checks every
-// primitive once, when it is read, against the same limits (scene-format.md §2-§4; the string
-// minimums are those of each type's reader, including getfunc()'s "file name must exist").
-// Geometry checks that need values (radius 0, negative radii becoming bubbles/cups/tubes,
+// primitive once, when it is read, against the same limits (../shared/docs/radiance/scene-format.md
+// §2-§4; the string minimums are those of each type's reader, including getfunc()'s "file name must
+// exist"). Geometry checks that need values (radius 0, negative radii becoming bubbles/cups/tubes,
 // zero-area or non-planar polygons) are not made here: Radiance makes them at oconv/render
 // time, and so does radcl's geometry module.
 #include "radcl/scene/rad_reader.h"
@@ -51,7 +51,8 @@ Rule rule_for(ObjectType t) {
   case RC_OBJ_INSTANCE:
   case RC_OBJ_MESH:
     return {1, kAny, 0, kAny, 1, 1};
-  // Materials with fixed arguments (scene-format.md §3: no strings unless an alternate).
+  // Materials with fixed arguments (../shared/docs/radiance/scene-format.md §3: no strings unless
+  // an alternate).
   case RC_OBJ_PLASTIC:
   case RC_OBJ_METAL:
     return exact_reals(5, 0);

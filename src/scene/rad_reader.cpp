@@ -1,5 +1,5 @@
-// Radiance scene files (scene-format.md §1): the top-level loop of readobj(), primitives,
-// alias, and the modifier index with its "identical redefinition" rule.
+// Radiance scene files (../shared/docs/radiance/scene-format.md §1): the top-level loop of
+// readobj(), primitives, alias, and the modifier index with its "identical redefinition" rule.
 #include "radcl/scene/rad_reader.h"
 #include "radcl/scene/command.h"
 

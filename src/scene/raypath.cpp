@@ -1,5 +1,5 @@
-// Auxiliary-file search (scene-format.md §1.4, octree-format.md §6.1): the one rule of
-// util/library_path.h.
+// Auxiliary-file search (../shared/docs/radiance/scene-format.md §1.4,
+// ../shared/docs/radiance/octree-format.md §6.1): the one rule of util/library_path.h.
 #include "radcl/scene/raypath.h"
 
 #include "radcl/util/library_path.h"

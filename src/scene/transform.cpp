@@ -1,4 +1,4 @@
-// Transform arguments with xform's semantics (scene-format.md §1.3).
+// Transform arguments with xform's semantics (../shared/docs/radiance/scene-format.md §1.3).
 #include "radcl/scene/transform.h"
 
 #include <cmath>

@@ -1,6 +1,7 @@
-// A .amb file shared with other radcl and Radiance processes (ambient-file.md §4): an
-// append-only log of 67-byte records. Every access takes a POSIX fcntl() lock on the whole
-// file, the lock Radiance's ambsync() uses, so radcl and rtrace/rpict can share one file.
+// A .amb file shared with other radcl and Radiance processes
+// (../shared/docs/radiance/ambient-file.md §4): an append-only log of 67-byte records. Every access
+// takes a POSIX fcntl() lock on the whole file, the lock Radiance's ambsync() uses, so radcl and
+// rtrace/rpict can share one file.
 //
 // fcntl() locks belong to a process, not to a descriptor: two AmbientFile objects on the same
 // path in one process do not exclude each other, and closing either releases both locks.

@@ -1,5 +1,6 @@
-// Radiance's 32-bit unit-vector code (ambient-file.md §2), used for the normal and u axis of
-// ambient records: two 13-bit magnitudes, the largest component implied, three sign bits.
+// Radiance's 32-bit unit-vector code (../shared/docs/radiance/ambient-file.md §2), used for the
+// normal and u axis of ambient records: two 13-bit magnitudes, the largest component implied, three
+// sign bits.
 #pragma once
 
 #include <array>

@@ -1,5 +1,6 @@
-// The .amb file as bytes (ambient-file.md §1, §5): information header, magic number 559, then
-// 67-byte records. Parsing here has no side effects; AmbientFile adds locking and appending.
+// The .amb file as bytes (../shared/docs/radiance/ambient-file.md §1, §5): information header,
+// magic number 559, then 67-byte records. Parsing here has no side effects; AmbientFile adds
+// locking and appending.
 #pragma once
 
 #include <array>

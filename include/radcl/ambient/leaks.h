@@ -1,9 +1,9 @@
-// The irradiance cache's light-leak test (Radiance's plugaleak, ambient-file.md §3), made on
-// the host: a record whose corral bits mark the direction of a lookup point is used there only
-// if a short test ray from the point towards the record meets nothing. The lookup kernel
-// cannot trace, so before a wave is shaded the host finds, for every hit, the marked records
-// the kernel's tests could accept and traces their test rays; the kernel then skips the
-// records listed as blocked (kernels/ambient/ambient_cache.cl).
+// The irradiance cache's light-leak test (Radiance's plugaleak,
+// ../shared/docs/radiance/ambient-file.md §3), made on the host: a record whose corral bits mark
+// the direction of a lookup point is used there only if a short test ray from the point towards the
+// record meets nothing. The lookup kernel cannot trace, so before a wave is shaded the host finds,
+// for every hit, the marked records the kernel's tests could accept and traces their test rays; the
+// kernel then skips the records listed as blocked (kernels/ambient/ambient_cache.cl).
 #pragma once
 
 #include <array>

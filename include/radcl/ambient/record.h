@@ -1,6 +1,6 @@
 // One irradiance-cache record exactly as Radiance 5 keeps it (ambient.h's AMBVAL minus the
-// list links) and its 67-byte portable form (ambient-file.md §1.2). Fields are float, as in
-// Radiance, so that decoding and re-encoding a file reproduces its bytes.
+// list links) and its 67-byte portable form (../shared/docs/radiance/ambient-file.md §1.2). Fields
+// are float, as in Radiance, so that decoding and re-encoding a file reproduces its bytes.
 #pragma once
 
 #include <array>
@@ -36,7 +36,8 @@ RecordBytes encode_record(const AmbientRecord& r);
 // readambval() on 67 available bytes, without the validity check.
 AmbientRecord decode_record(const unsigned char* bytes);
 
-// ambvalOK(): the checks Radiance applies to every record it reads (ambient-file.md §1.3).
+// ambvalOK(): the checks Radiance applies to every record it reads
+// (../shared/docs/radiance/ambient-file.md §1.3).
 bool record_ok(const AmbientRecord& r);
 // What a reader will accept: finite fields and record_ok() of the record as decoded from its
 // bytes. Nothing else is ever appended to a shared file.

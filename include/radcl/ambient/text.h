@@ -1,5 +1,6 @@
-// lookamb's text forms of records (ambient-file.md §3): the labelled listing and the 21-column
-// data lines (-d), and the reverse conversion (-r) that re-encodes directions.
+// lookamb's text forms of records (../shared/docs/radiance/ambient-file.md §3): the labelled
+// listing and the 21-column data lines (-d), and the reverse conversion (-r) that re-encodes
+// directions.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Expression trees of the .cal language (calc-language.md §3).
+// Expression trees of the .cal language (../shared/docs/radiance/calc-language.md §3).
 #pragma once
 
 #include <cstdint>

@@ -7,15 +7,16 @@
 #define RADCL_CALC_DEVICE_CONTEXT_H
 
 /* Slots of rc_calc_ray.v. Slots 0..26 are Radiance's channels $1..$27 (channel = slot + 1);
- * the rest are the material-specific variables of calc-language.md §5.2. */
+ * the rest are the material-specific variables of ../shared/docs/radiance/calc-language.md §5.2. */
 #define RC_CALC_RAY_VARS(X)                                                                        \
   X(DX, "Dx")                                                                                      \
-  X(DY, "Dy") X(DZ, "Dz") X(NX, "Nx") X(NY, "Ny") X(NZ, "Nz") X(PX, "Px") X(PY, "Py") X(PZ, "Pz")  \
-      X(T, "T") X(RDOT, "Rdot") X(S, "S") X(TX, "Tx") X(TY, "Ty") X(TZ, "Tz") X(IX, "Ix")          \
-          X(IY, "Iy") X(IZ, "Iz") X(JX, "Jx") X(JY, "Jy") X(JZ, "Jz") X(KX, "Kx") X(KY, "Ky")      \
-              X(KZ, "Kz") X(TS, "Ts") X(LU, "Lu") X(LV, "Lv") X(NXP, "NxP") X(NYP, "NyP")          \
-                  X(NZP, "NzP") X(RDOTP, "RdotP") X(CRP, "CrP") X(CGP, "CgP") X(CBP, "CbP")        \
-                      X(DXA, "DxA") X(DYA, "DyA") X(DZA, "DzA")
+  X(DY, "Dy")                                                                                      \
+  X(DZ, "Dz") X(NX, "Nx") X(NY, "Ny") X(NZ, "Nz") X(PX, "Px") X(PY, "Py") X(PZ, "Pz") X(T, "T")    \
+      X(RDOT, "Rdot") X(S, "S") X(TX, "Tx") X(TY, "Ty") X(TZ, "Tz") X(IX, "Ix") X(IY, "Iy")        \
+          X(IZ, "Iz") X(JX, "Jx") X(JY, "Jy") X(JZ, "Jz") X(KX, "Kx") X(KY, "Ky") X(KZ, "Kz")      \
+              X(TS, "Ts") X(LU, "Lu") X(LV, "Lv") X(NXP, "NxP") X(NYP, "NyP") X(NZP, "NzP")        \
+                  X(RDOTP, "RdotP") X(CRP, "CrP") X(CGP, "CgP") X(CBP, "CbP") X(DXA, "DxA")        \
+                      X(DYA, "DyA") X(DZA, "DzA")
 
 #define RC_CALC_SLOT_ENTRY(id, name) RC_CALC_##id,
 enum rc_calc_slot { RC_CALC_RAY_VARS(RC_CALC_SLOT_ENTRY) RC_CALC_NSLOTS };

@@ -1,8 +1,8 @@
 // Host evaluation of .cal expressions in double precision, with Radiance's semantics
-// (calc-language.md §3.2-§3.4): call-by-need arguments, `=` variables cached per ray, division
-// by zero / illegal powers / library domain errors give 0 with a warning, undefined names and
-// missing arguments are fatal. Used for constant folding, the `radcl calc` command and tests;
-// rendering evaluates the generated device code instead (codegen.h).
+// (../shared/docs/radiance/calc-language.md §3.2-§3.4): call-by-need arguments, `=` variables
+// cached per ray, division by zero / illegal powers / library domain errors give 0 with a warning,
+// undefined names and missing arguments are fatal. Used for constant folding, the `radcl calc`
+// command and tests; rendering evaluates the generated device code instead (codegen.h).
 #pragma once
 
 #include <cstddef>

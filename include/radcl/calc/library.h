@@ -1,5 +1,6 @@
-// The names the .cal language knows without definitions: library functions (calc-language.md
-// §4, §4.1) and the renderer's ray variables (§5.1, §5.2).
+// The names the .cal language knows without definitions: library functions
+// (../shared/docs/radiance/calc-language.md §4, §4.1) and the renderer's ray variables (§5.1,
+// §5.2).
 #pragma once
 
 #include <string_view>

@@ -1,5 +1,6 @@
 // A set of loaded .cal definitions: parsing of files and expressions, contexts (scopes) and
-// name lookup as Radiance's renderers do it (calc-language.md §2, §3.3, §5.3).
+// name lookup as Radiance's renderers do it (../shared/docs/radiance/calc-language.md §2, §3.3,
+// §5.3).
 #pragma once
 
 #include <memory>

@@ -1,6 +1,6 @@
-// A Radiance information header (picture-format.md §2): text lines ending at an empty line.
-// The lines are kept verbatim, in order, so a header read and written again is unchanged; the
-// values Radiance's tools look at are parsed from them on demand.
+// A Radiance information header (../shared/docs/radiance/picture-format.md §2): text lines ending
+// at an empty line. The lines are kept verbatim, in order, so a header read and written again is
+// unchanged; the values Radiance's tools look at are parsed from them on demand.
 #pragma once
 
 #include <array>

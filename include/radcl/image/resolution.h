@@ -1,5 +1,5 @@
-// The resolution string (picture-format.md §3): which axis the scanlines follow and which way
-// each axis runs. "-Y N +X M" is the standard top-down, left-to-right order.
+// The resolution string (../shared/docs/radiance/picture-format.md §3): which axis the scanlines
+// follow and which way each axis runs. "-Y N +X M" is the standard top-down, left-to-right order.
 #pragma once
 
 #include <istream>

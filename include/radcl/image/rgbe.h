@@ -1,6 +1,6 @@
-// Radiance's 4-byte pixels (picture-format.md §4): three mantissas sharing one exponent, excess
-// 128. The conversions reproduce Radiance's setcolr()/colr_color() to the bit, so pictures we
-// write decode to the same values Radiance's tools see.
+// Radiance's 4-byte pixels (../shared/docs/radiance/picture-format.md §4): three mantissas sharing
+// one exponent, excess 128. The conversions reproduce Radiance's setcolr()/colr_color() to the bit,
+// so pictures we write decode to the same values Radiance's tools see.
 #pragma once
 
 #include <array>

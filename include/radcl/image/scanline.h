@@ -1,6 +1,6 @@
-// One scanline's bytes (picture-format.md §5). The encoder produces exactly the bytes
-// Radiance's fwritecolrs() does; the decoder accepts everything freadcolrs() does: new-style
-// RLE, flat pixels and old-style repeat markers, detected per scanline.
+// One scanline's bytes (../shared/docs/radiance/picture-format.md §5). The encoder produces exactly
+// the bytes Radiance's fwritecolrs() does; the decoder accepts everything freadcolrs() does:
+// new-style RLE, flat pixels and old-style repeat markers, detected per scanline.
 #pragma once
 
 #include <span>

@@ -1,5 +1,5 @@
-// Rays through a view (Radiance's viewray(), cli-rtrace-rpict.md §5.2), shared by rpict and
-// anything that needs vwrays-style camera rays.
+// Rays through a view (Radiance's viewray(), ../shared/docs/radiance/cli-rtrace-rpict.md §5.2),
+// shared by rpict and anything that needs vwrays-style camera rays.
 #pragma once
 
 #include <array>

@@ -1,4 +1,5 @@
-// The BSDF and aBSDF materials' function records (scene-format.md §3.13): string arguments
+// The BSDF and aBSDF materials' function records (../shared/docs/radiance/scene-format.md §3.13):
+// string arguments
 //   BSDF:  thickness  file.xml  ux uy uz  funcfile  [transform]
 //   aBSDF:            file.xml  ux uy uz  funcfile  [transform]
 // The thickness and the up vector are expressions evaluated at each hit in function space

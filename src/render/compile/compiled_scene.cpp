@@ -8,6 +8,7 @@
 #include <numbers>
 #include <set>
 
+#include "radcl/render/compile/material_traits.h"
 #include "radcl/render/compile/mixture_chain.h"
 #include "radcl/scene/material_chain.h"
 #include "radcl/util/error.h"
@@ -15,55 +16,12 @@
 namespace radcl::render {
 namespace {
 
-// Materials the kernels implement so far; anything else is refused by name.
-bool supported_material(rc_object_type t) {
-  switch (t) {
-  case RC_OBJ_PLASTIC:
-  case RC_OBJ_METAL:
-  case RC_OBJ_LIGHT:
-  case RC_OBJ_GLOW:
-  case RC_OBJ_ILLUM:
-  case RC_OBJ_SPOTLIGHT:
-  case RC_OBJ_MIRROR:
-  case RC_OBJ_TRANS:
-  case RC_OBJ_GLASS:
-  case RC_OBJ_DIELECTRIC:
-  case RC_OBJ_INTERFACE:
-  case RC_OBJ_ANTIMATTER:
-  case RC_OBJ_MIST:
-    return true;
-  default:
-    return has_func_record(t);
-  }
-}
-
 // Limits of the rays' antimatter state (rc_ray.clip and rc_ray.inside).
 constexpr std::size_t kMaxClipped = 32;
 constexpr std::size_t kMaxShadingAntimatter = 4;
 
 // A modifier object: its scene (instances and meshes have their own) and number there.
 using ModKey = std::pair<const scene::SceneDescription*, std::int32_t>;
-
-// The kernels read a fixed number of real arguments for these; Radiance refuses others.
-bool real_count_ok(rc_object_type t, std::size_t n) {
-  switch (t) {
-  case RC_OBJ_TRANS:
-    return n == 7;
-  case RC_OBJ_GLASS:
-    return n == 3 || n == 4;
-  case RC_OBJ_DIELECTRIC:
-    return n == 5;
-  case RC_OBJ_INTERFACE:
-  case RC_OBJ_TRANS2:
-  case RC_OBJ_ASHIK2:
-    return n == 8;
-  case RC_OBJ_PLASTIC2:
-  case RC_OBJ_METAL2:
-    return n == 6;
-  default:
-    return true;
-  }
-}
 
 class Compiler {
 public:
@@ -374,7 +332,7 @@ private:
     auto key = std::make_pair(&sd, obj);
     if (auto it = ids_.find(key); it != ids_.end()) return it->second;
     const scene::Object& o = sd.objects[obj];
-    if (shading_ && !supported_material(o.type))
+    if (shading_ && !material_traits(o.type).shaded)
       throw FatalError("material type \"" + std::string(scene::type_name(o.type)) + "\" of \"" +
                        o.name + "\" is not supported yet");
     if (shading_ && o.type == RC_OBJ_ANTIMATTER) {

@@ -1,9 +1,9 @@
-// The BRDF materials' string arguments (scene-format.md §3.11, §3.12; calc-language.md §5.4):
-// plasfunc, metfunc, transfunc (a reflection function of (dx, dy, dz, omega)), plasdata,
-// metdata, transdata (a data file whose coordinates are such functions, and a function of
-// (value, dx, dy, dz, omega)) and BRTDfunc (six coefficient expressions and three functions).
-// The functions are reached on the device through the dispatcher rc_brdf_call() generated here;
-// kernels/materials/brdf_func.cl reads the descriptor this returns.
+// The BRDF materials' string arguments (../shared/docs/radiance/scene-format.md §3.11, §3.12;
+// ../shared/docs/radiance/calc-language.md §5.4): plasfunc, metfunc, transfunc (a reflection
+// function of (dx, dy, dz, omega)), plasdata, metdata, transdata (a data file whose coordinates are
+// such functions, and a function of (value, dx, dy, dz, omega)) and BRTDfunc (six coefficient
+// expressions and three functions). The functions are reached on the device through the dispatcher
+// rc_brdf_call() generated here; kernels/materials/brdf_func.cl reads the descriptor this returns.
 #include "radcl/render/compile/func_materials.h"
 #include "radcl/calc/codegen.h"
 #include "radcl/calc/program.h"

@@ -139,8 +139,8 @@ std::vector<std::uint32_t> PatternCompiler::compile_data(const scene::Object& o,
                                                          std::vector<float>& args,
                                                          std::size_t& transform) {
   const auto type = static_cast<rc_object_type>(o.type);
-  // String arguments (calc-language.md §5.4): a mixture's two sides, functions, data files,
-  // function file, coordinates.
+  // String arguments (../shared/docs/radiance/calc-language.md §5.4): a mixture's two sides,
+  // functions, data files, function file, coordinates.
   const bool mix = type == RC_OBJ_MIXDATA || type == RC_OBJ_MIXPICT;
   const std::size_t first = mix ? 2 : 0;
   const std::size_t nfunc = type == RC_OBJ_BRIGHTDATA || mix ? 1 : 3;

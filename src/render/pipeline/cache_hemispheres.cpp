@@ -88,9 +88,10 @@ void Renderer::Impl::supersample_hemispheres(const std::vector<rc_amb_hemi>& hem
   if (extra.empty()) return;
   std::vector<PrimaryResult> more(extra.size());
   timed.stop();
-  ++nesting;
-  build_render(extra, more, extra_start);
-  --nesting;
+  {
+    Nested nested(*this);
+    build_render(extra, more, extra_start);
+  }
   timed.start(Phase::Sample);
   // Each division's value: the mean of its samples; its distance: the nearest (its point
   // stays the first sample's).
@@ -110,11 +111,12 @@ double Renderer::Impl::sample_length(const PrimaryResult& r) {
   return std::min(1e10, r.t + std::max(beyond, 0.0));
 }
 
-void Renderer::Impl::sample_hemispheres(const std::vector<const rc_ray*>& chosen) {
-  std::vector<rc_amb_hemi> hemis;
-  std::vector<PrimaryRay> rays;
-  std::vector<RayStart> start;
-  Timed timed(prof, Phase::Sample);
+Renderer::Impl::NewHemispheres
+Renderer::Impl::hemisphere_rays(const std::vector<const rc_ray*>& chosen) {
+  NewHemispheres out;
+  std::vector<rc_amb_hemi>& hemis = out.hemis;
+  std::vector<PrimaryRay>& rays = out.rays;
+  std::vector<RayStart>& start = out.start;
   const HemisphereSettings hs{settings.ambient_min_radius, settings.ambient_max_radius,
                               settings.aa};
   // Which misses are sampled, each hemisphere's frame, first sample and ids, in order;
@@ -189,12 +191,22 @@ void Renderer::Impl::sample_hemispheres(const std::vector<const rc_ray*>& chosen
         ++at;
       }
   });
+  return out;
+}
+
+void Renderer::Impl::sample_hemispheres(const std::vector<const rc_ray*>& chosen) {
+  Timed timed(prof, Phase::Sample);
+  NewHemispheres nh = hemisphere_rays(chosen);
+  const std::vector<rc_amb_hemi>& hemis = nh.hemis;
+  const std::vector<PrimaryRay>& rays = nh.rays;
+  const std::vector<RayStart>& start = nh.start;
   if (hemis.empty()) return;
   std::vector<PrimaryResult> res(rays.size());
   timed.stop();
-  ++nesting;
-  build_render(rays, res, start);
-  --nesting;
+  {
+    Nested nested(*this);
+    build_render(rays, res, start);
+  }
   timed.start(Phase::Sample);
   std::vector<double> nearest(res.size());
   for_rows(res.size(), [&](std::size_t i) { nearest[i] = sample_length(res[i]); });
@@ -240,7 +252,7 @@ void Renderer::Impl::sample_hemispheres(const std::vector<const rc_ray*>& chosen
     ++added;
   }
   stats.records += added;
-  if (std::getenv("RADCL_DEBUG_CACHE"))
+  if (settings.tuning.debug_cache)
     std::fprintf(stderr, "cache: nesting %d: %zu hemispheres, %zu records\n", nesting, hemis.size(),
                  added);
   if (added) upload_cache();

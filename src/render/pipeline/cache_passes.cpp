@@ -20,8 +20,7 @@ void Renderer::Impl::upload_cache() {
   Timed timed(prof, Phase::Upload);
   for (; level_seen < cache_local.size(); ++level_seen)
     min_level = std::min<int>(min_level, cache_local[level_seen].lvl);
-  const char* lt = std::getenv("RADCL_LEAK_TEST"); // "0": no leak test (to measure it)
-  const bool leak_test = !(lt && std::string(lt) == "0");
+  const bool leak_test = settings.tuning.leak_test; // off: to measure it
   const std::size_t n = uses_cache(settings) ? cache_local.size() : 0;
   if (n < (cache_trees.empty() ? 0 : cache_trees.back().to)) {
     cache_trees.clear();
@@ -105,6 +104,32 @@ void Renderer::Impl::set_collect(bool on) {
   params.write(&p, sizeof p);
 }
 
+Renderer::Impl::CachePass::CachePass(Impl& im, std::span<const RayStart> st, bool last)
+    : im_(im), tree_(im.tree), starts_(im.starts) {
+  if (!last) im.tree = false; // nothing is super-sampled while misses are only reported
+  im.starts = st;
+  im.set_collect(!last);
+  im.misses.clear();
+}
+
+bool Renderer::Impl::CachePass::end() {
+  ended_ = true;
+  im_.set_collect(false);
+  const bool thrown = std::exchange(im_.throwaway, false);
+  im_.starts = starts_;
+  im_.tree = tree_;
+  return thrown;
+}
+
+Renderer::Impl::CachePass::~CachePass() {
+  if (ended_) return;
+  // The render failed: the renderer's fields as they were (the device's may be lost).
+  im_.collecting = false;
+  im_.throwaway = false;
+  im_.starts = starts_;
+  im_.tree = tree_;
+}
+
 bool Renderer::Impl::will_all_miss(std::span<const RayStart> st) const {
   if (st.empty()) return settings.ab > 0 && min_level > 0;
   return std::all_of(st.begin(), st.end(), [&](const RayStart& r) {
@@ -146,24 +171,16 @@ void Renderer::Impl::build_render(std::span<const PrimaryRay> rays,
     for_rows(sub.size(), [&](std::size_t k) { ids[k] = sub[k].id; });
     IdSlots at;
     at.assign(ids);
-    const bool saved_tree = tree;
-    const std::span<const RayStart> saved_starts = starts;
-    if (!last) tree = false; // nothing is super-sampled while misses are only reported
-    starts = whole ? st : std::span<const RayStart>(sub_start);
-    set_collect(!last);
+    CachePass pass(*this, whole ? st : std::span<const RayStart>(sub_start), last);
     // A first pass whose every lookup must miss (no record is at or below its rays' ambient
     // depth) is thrown away whole: its shadow rays are not traced, and every ray goes again.
     throwaway = round == 0 && !last && will_all_miss(st);
-    misses.clear();
     timed.stop();
     const auto t0 = std::chrono::steady_clock::now();
     run(sub, res);
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     timed.start(Phase::Bookkeeping);
-    set_collect(false);
-    const bool thrown = std::exchange(throwaway, false);
-    starts = saved_starts;
-    tree = saved_tree;
+    const bool thrown = pass.end();
     std::vector<rc_ray> miss = std::move(misses);
     misses.clear();
     std::vector<char> missed(sub.size(), 0);
@@ -176,7 +193,7 @@ void Renderer::Impl::build_render(std::span<const PrimaryRay> rays,
       for_rows(sub.size(), [&](std::size_t k) {
         if (!missed[k]) results[todo[k]] = std::move(res[k]);
       });
-    if (std::getenv("RADCL_DEBUG_CACHE"))
+    if (settings.tuning.debug_cache)
       std::fprintf(stderr,
                    "cache: nesting %d round %d: %zu primaries, %zu missed, %zu misses %.6f\n",
                    nesting, round, sub.size(), again.size(), miss.size(), dt);

@@ -7,9 +7,8 @@
 #include "radcl/util/error.h"
 
 namespace radcl::render {
-GenerationMirror::GenerationMirror(device::Context& ctx) : ctx_(ctx) {
-  const char* e = std::getenv("RADCL_MIRROR"); // "0": every generation uploaded from the host
-  on_ = !ctx.zero_copy() && !(e && std::string(e) == "0");
+GenerationMirror::GenerationMirror(device::Context& ctx, bool wanted) : ctx_(ctx) {
+  on_ = wanted && !ctx.zero_copy(); // off: every generation uploaded from the host
   // A generation past this many bytes stays on the host: each of the two copies takes at most
   // the device's largest allocation, a tenth of its memory and 3 GB (a GPU allocates lazily, so
   // an allocation that does not fit would fail at a later command, not here). Waves are split

@@ -16,7 +16,8 @@ namespace radcl::render {
 
 class GenerationMirror {
 public:
-  explicit GenerationMirror(device::Context& ctx);
+  // `wanted` off: every generation is uploaded from the host.
+  GenerationMirror(device::Context& ctx, bool wanted);
   // A batch begins: its first generation comes from the host.
   void start_batch();
   // Whether the current generation's rays are all on the device.

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "pipeline_util.h"
+#include "radcl/render/compile/material_traits.h"
 #include "renderer_impl.h"
 
 namespace radcl::render {
@@ -19,7 +20,7 @@ using namespace pipeline;
 void Renderer::Impl::note_shadow_blockers(const CompiledSources& so) {
   shadow_blockers.clear();
   shadow_misses_reach = false;
-  if (const char* e = std::getenv("RADCL_SHADOW_ON_HOST"); e && std::string_view(e) == "0")
+  if (!settings.tuning.shadow_blockers_on_host)
     return; // every ray stepped on the device (the tests' reference)
   for (const rc_source& src : so.sources)
     if (src.flags & RC_SRCF_VIRTUAL) return;
@@ -33,27 +34,12 @@ void Renderer::Impl::note_shadow_blockers(const CompiledSources& so) {
                         });
   // Only materials rc_shadow_at passes to its last case; emitters are left to the step (one
   // may be the source aimed at) and so is every other kind.
-  auto blocks = [](std::uint32_t type) {
-    switch (type) {
-    case RC_OBJ_PLASTIC:
-    case RC_OBJ_METAL:
-    case RC_OBJ_PLASTIC2:
-    case RC_OBJ_METAL2:
-    case RC_OBJ_ASHIK2:
-    case RC_OBJ_PLASFUNC:
-    case RC_OBJ_METFUNC:
-    case RC_OBJ_PLASDATA:
-    case RC_OBJ_METDATA:
-      return true;
-    default:
-      return false;
-    }
-  };
   shadow_blockers.resize(cs.surfaces.size());
   for (std::size_t i = 0; i < cs.surfaces.size(); ++i) {
     const rc_surface& f = cs.surfaces[i];
-    shadow_blockers[i] = f.material != RC_NONE && f.clip == 0 && f.source == RC_NONE &&
-                         blocks(cs.materials[f.material].type);
+    shadow_blockers[i] =
+        f.material != RC_NONE && f.clip == 0 && f.source == RC_NONE &&
+        material_traits(static_cast<rc_object_type>(cs.materials[f.material].type)).blocks_shadows;
   }
 }
 
@@ -88,6 +74,63 @@ bool Renderer::Impl::trace_shadows(device::Buffer& shadows, std::size_t n,
 bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view,
                                         std::size_t first, std::size_t n, std::uint8_t* blocked,
                                         const std::function<void()>& after_step) {
+  gather_shadow_rays(view, first, n);
+  std::vector<std::uint32_t>&slot = shadow_slot, &state = shadow_state;
+  std::vector<ShadowView>& cur = shadow_cur;
+  state.assign(cur.size(), 0);
+  // Radiance traces shadow rays on until their weight vanishes; a glass stack that needs
+  // more steps than this contributes nothing measurable.
+  constexpr int kMaxSteps = 64;
+  bool done = false; // after_step ran after the last step
+  for (int step = 0; step < kMaxSteps && !cur.empty(); ++step) {
+    std::size_t m = cur.size();
+    Timed timed(prof, Phase::ShadowTrace);
+    // Rays whose hit blocks them outright stay blocked with no step (shadow_blockers); misses
+    // may reach their sources with none (shadow_misses_reach).
+    const bool decide = !shadow_blockers.empty();
+    trace_shadow_hits(m, decide);
+    stats.shadow += m;
+    if (decide) {
+      m = keep_undecided(m, first, n, blocked);
+      if (m == 0) break;
+    }
+    stats.shadow_steps += m;
+    timed.start(Phase::ShadowStep);
+    PhaseProfile::StepClock clock(prof);
+    const ShadowView* next = step_shadows(shadows, m, after_step, clock);
+    done = static_cast<bool>(after_step);
+
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::uint32_t status = state[i] & RC_SH_STATUS;
+      if (status == RC_SH_REACHED)
+        blocked[slot[i]] = 0;
+      else if (status == RC_SH_CONTINUE)
+        ++k;
+    }
+    clock.mark(PhaseProfile::StepShadowHost);
+    if (k == 0) break;
+    // The few that go on (through glass): their new origins and directions.
+    if (!next)
+      next = static_cast<const ShadowView*>(
+          scratch(kStepView, m * sizeof(ShadowView)).peek(m * sizeof(ShadowView), peek_view_step));
+    k = 0;
+    for (std::size_t i = 0; i < m; ++i)
+      if ((state[i] & RC_SH_STATUS) == RC_SH_CONTINUE) {
+        cur[k] = next[i];
+        state[k] = state[i];
+        slot[k] = slot[i];
+        ++k;
+      }
+    cur.resize(k);
+    state.resize(k);
+    slot.resize(k);
+    done = false;
+  }
+  return done;
+}
+
+void Renderer::Impl::gather_shadow_rays(const ShadowView* view, std::size_t first, std::size_t n) {
   std::vector<std::uint32_t>& slot = shadow_slot;
   std::vector<ShadowView>& cur = shadow_cur;
   slot.clear();
@@ -109,142 +152,114 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
         cur.push_back(v[i]);
       }
   }
-  std::vector<std::uint32_t>& state = shadow_state;
-  state.assign(cur.size(), 0);
-  // Radiance traces shadow rays on until their weight vanishes; a glass stack that needs
-  // more steps than this contributes nothing measurable.
-  constexpr int kMaxSteps = 64;
-  bool done = false; // after_step ran after the last step
-  for (int step = 0; step < kMaxSteps && !cur.empty(); ++step) {
-    std::size_t m = cur.size();
-    Timed timed(prof, Phase::ShadowTrace);
-    // One pass per ray: the query and its device record.
-    HitQueue& hits = shadow_hits;
-    if (hits.capacity() < kShadowChunk) hits.reserve(kShadowChunk); // pinned room is costly to take
-    hits.resize(m);
-    // Rays whose hit blocks them outright stay blocked with no step (shadow_blockers); misses
-    // may reach their sources with none (shadow_misses_reach).
-    const bool decide = !shadow_blockers.empty();
-    std::vector<std::uint8_t>& decided = shadow_decided;
-    if (decide) decided.resize(m);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const auto& range) {
-      constexpr std::size_t kBlock = 16; // to Embree in packets
-      std::array<geometry::Ray, kBlock> ray;
-      std::array<std::optional<geometry::Hit>, kBlock> h;
-      for (std::size_t a = range.begin(); a < range.end(); a += kBlock) {
-        const std::size_t b = std::min(kBlock, range.end() - a);
-        for (std::size_t k = 0; k < b; ++k) {
-          const ShadowView& s = cur[a + k];
-          ray[k].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
-          ray[k].dir = {s.dir.x, s.dir.y, s.dir.z};
-          ray[k].tmin = s.org.w;
-          ray[k].free_origin = s.org.w > 0; // from an -I meter's point (rc_leave_org)
-          ray[k].tmax = std::isfinite(s.dir.w) ? s.dir.w * 1.001 + 1e-3 : 1e300;
-        }
-        geom.intersect_block(ray.data(), b, h.data());
-        for (std::size_t k = 0; k < b; ++k) {
-          if (decide) { // a decided ray's record is never read
-            std::uint8_t& d = decided[a + k];
-            if (h[k]) {
-              const std::uint32_t f = cs.surface_of(*h[k]);
-              d = f < shadow_blockers.size() ? shadow_blockers[f] : 0;
-            } else {
-              d = shadow_misses_reach ? 2 : 0;
-            }
-            if (d) continue;
+}
+
+void Renderer::Impl::trace_shadow_hits(std::size_t m, bool decide) {
+  // One pass per ray: the query and its device record.
+  HitQueue& hits = shadow_hits;
+  if (hits.capacity() < kShadowChunk) hits.reserve(kShadowChunk); // pinned room is costly to take
+  hits.resize(m);
+  std::vector<std::uint8_t>& decided = shadow_decided;
+  if (decide) decided.resize(m);
+  const std::vector<ShadowView>& cur = shadow_cur;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const auto& range) {
+    constexpr std::size_t kBlock = 16; // to Embree in packets
+    std::array<geometry::Ray, kBlock> ray;
+    std::array<std::optional<geometry::Hit>, kBlock> h;
+    for (std::size_t a = range.begin(); a < range.end(); a += kBlock) {
+      const std::size_t b = std::min(kBlock, range.end() - a);
+      for (std::size_t k = 0; k < b; ++k) {
+        const ShadowView& s = cur[a + k];
+        ray[k].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
+        ray[k].dir = {s.dir.x, s.dir.y, s.dir.z};
+        ray[k].tmin = s.org.w;
+        ray[k].free_origin = s.org.w > 0; // from an -I meter's point (rc_leave_org)
+        ray[k].tmax = std::isfinite(s.dir.w) ? s.dir.w * 1.001 + 1e-3 : 1e300;
+      }
+      geom.intersect_block(ray.data(), b, h.data());
+      for (std::size_t k = 0; k < b; ++k) {
+        if (decide) { // a decided ray's record is never read
+          std::uint8_t& d = decided[a + k];
+          if (h[k]) {
+            const std::uint32_t f = cs.surface_of(*h[k]);
+            d = f < shadow_blockers.size() ? shadow_blockers[f] : 0;
+          } else {
+            d = shadow_misses_reach ? 2 : 0;
           }
-          to_device(ray[k], h[k], hits[a + k]);
+          if (d) continue;
         }
+        to_device(ray[k], h[k], hits[a + k]);
       }
-    });
-    stats.shadow += m;
-    if (decide) { // the rest, packed in order
-      std::size_t k = 0;
-      bool reached = false;
-      for (std::size_t i = 0; i < m; ++i) {
-        if (decided[i] == 2) {
-          blocked[slot[i]] = 0;
-          reached = true;
-        }
-        if (decided[i]) continue;
-        if (k != i) {
-          hits[k] = hits[i];
-          slot[k] = slot[i];
-          state[k] = state[i];
-        }
-        ++k;
-      }
-      m = k;
-      hits.resize(m);
-      slot.resize(m);
-      state.resize(m);
-      // In queue order before the step and the sums that read them.
-      if (reached) scratch(kBlocked, std::size_t{0}).write(blocked + first, n, first);
-      if (m == 0) break;
     }
-    stats.shadow_steps += m;
-    timed.start(Phase::ShadowStep);
-    PhaseProfile::StepClock clock(prof);
+  });
+}
 
-    // The step works on the requests in place: only the hits, the slots and the states cross.
-    device::Buffer& bslot = scratch(kStepSlots, slot);
-    device::Buffer hit_view = device::Buffer::view(ctx, hits.data(), m * sizeof(rc_hit));
-    device::Buffer& bhits = hit_view.handle() ? hit_view : scratch(kStepHits, m * sizeof(rc_hit));
-    if (!hit_view.handle()) write_rows(bhits, hits.data(), m * sizeof(rc_hit));
-    device::Buffer& bstate = scratch(kStepState, state);
-    device::Buffer& bnext = scratch(kStepView, m * sizeof(ShadowView));
-    std::uint32_t um = static_cast<std::uint32_t>(m);
-    shadow_step.arg(0, shadows)
-        .arg(1, bslot)
-        .arg(2, bhits)
-        .arg(3, bstate)
-        .arg(4, bnext)
-        .arg(5, scratch(kBlocked, std::size_t{0}))
-        .arg(6, um);
-    set_scene_args(shadow_step, 7);
-    ctx.run(shadow_step, m);
-    bstate.read_later(state.data(), m * sizeof(std::uint32_t));
-    // The caller's next commands go in the same wait, in case this step is the last; so do
-    // the new views of a step this small, in case some go on (each wait is a round trip on a
-    // GPU, where reading them after it would be another).
-    if (after_step) after_step();
-    const bool views_along = after_step && m <= kSumAlongRays;
-    const ShadowView* next = nullptr;
-    if (views_along)
-      next =
-          static_cast<const ShadowView*>(bnext.peek_later(m * sizeof(ShadowView), peek_view_step));
-    clock.mark(PhaseProfile::StepShadowSend);
-    ctx.finish();
-    clock.mark(PhaseProfile::StepShadowWait);
-    done = static_cast<bool>(after_step);
-
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-      std::uint32_t status = state[i] & 3u;
-      if (status == 1u) // reached its source
-        blocked[slot[i]] = 0;
-      else if (status == 2u) // goes on
-        ++k;
+std::size_t Renderer::Impl::keep_undecided(std::size_t m, std::size_t first, std::size_t n,
+                                           std::uint8_t* blocked) {
+  // The rest, packed in order.
+  HitQueue& hits = shadow_hits;
+  const std::vector<std::uint8_t>& decided = shadow_decided;
+  std::vector<std::uint32_t>&slot = shadow_slot, &state = shadow_state;
+  std::size_t k = 0;
+  bool reached = false;
+  for (std::size_t i = 0; i < m; ++i) {
+    if (decided[i] == 2) {
+      blocked[slot[i]] = 0;
+      reached = true;
     }
-    clock.mark(PhaseProfile::StepShadowHost);
-    if (k == 0) break;
-    // The few that go on (through glass): their new origins and directions.
-    if (!next)
-      next = static_cast<const ShadowView*>(bnext.peek(m * sizeof(ShadowView), peek_view_step));
-    k = 0;
-    for (std::size_t i = 0; i < m; ++i)
-      if ((state[i] & 3u) == 2u) {
-        cur[k] = next[i];
-        state[k] = state[i];
-        slot[k] = slot[i];
-        ++k;
-      }
-    cur.resize(k);
-    state.resize(k);
-    slot.resize(k);
-    done = false;
+    if (decided[i]) continue;
+    if (k != i) {
+      hits[k] = hits[i];
+      slot[k] = slot[i];
+      state[k] = state[i];
+    }
+    ++k;
   }
-  return done;
+  m = k;
+  hits.resize(m);
+  slot.resize(m);
+  state.resize(m);
+  // In queue order before the step and the sums that read them.
+  if (reached) scratch(kBlocked, std::size_t{0}).write(blocked + first, n, first);
+  return m;
+}
+
+const Renderer::Impl::ShadowView*
+Renderer::Impl::step_shadows(device::Buffer& shadows, std::size_t m,
+                             const std::function<void()>& after_step,
+                             PhaseProfile::StepClock& clock) {
+  HitQueue& hits = shadow_hits;
+  std::vector<std::uint32_t>&slot = shadow_slot, &state = shadow_state;
+  // The step works on the requests in place: only the hits, the slots and the states cross.
+  device::Buffer& bslot = scratch(kStepSlots, slot);
+  device::Buffer hit_view = device::Buffer::view(ctx, hits.data(), m * sizeof(rc_hit));
+  device::Buffer& bhits = hit_view.handle() ? hit_view : scratch(kStepHits, m * sizeof(rc_hit));
+  if (!hit_view.handle()) write_rows(bhits, hits.data(), m * sizeof(rc_hit));
+  device::Buffer& bstate = scratch(kStepState, state);
+  device::Buffer& bnext = scratch(kStepView, m * sizeof(ShadowView));
+  std::uint32_t um = static_cast<std::uint32_t>(m);
+  shadow_step.arg(0, shadows)
+      .arg(1, bslot)
+      .arg(2, bhits)
+      .arg(3, bstate)
+      .arg(4, bnext)
+      .arg(5, scratch(kBlocked, std::size_t{0}))
+      .arg(6, um);
+  set_scene_args(shadow_step, 7);
+  ctx.run(shadow_step, m);
+  bstate.read_later(state.data(), m * sizeof(std::uint32_t));
+  // The caller's next commands go in the same wait, in case this step is the last; so do
+  // the new views of a step this small, in case some go on (each wait is a round trip on a
+  // GPU, where reading them after it would be another).
+  if (after_step) after_step();
+  const bool views_along = after_step && m <= kSumAlongRays;
+  const ShadowView* next = nullptr;
+  if (views_along)
+    next = static_cast<const ShadowView*>(bnext.peek_later(m * sizeof(ShadowView), peek_view_step));
+  clock.mark(PhaseProfile::StepShadowSend);
+  ctx.finish();
+  clock.mark(PhaseProfile::StepShadowWait);
+  return next;
 }
 
 } // namespace radcl::render

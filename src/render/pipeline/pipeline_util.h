@@ -12,17 +12,13 @@
 #include "radcl/device/context.h"
 #include "radcl/device/host_copy.h"
 #include "radcl/device_types.h"
+#include "radcl/luminance.h"
 #include "radcl/render/pipeline/renderer.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace radcl::render::pipeline {
-
-// Radiance's bright() as the host's ambient code weighs samples.
-inline double bright(const Vec3d& c) {
-  return 0.2651 * c[0] + 0.6701 * c[1] + 0.0648 * c[2];
-}
 
 inline rc_float4 f4(double x, double y, double z, double w) {
   return rc_float4{static_cast<float>(x), static_cast<float>(y), static_cast<float>(z),

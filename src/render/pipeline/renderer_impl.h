@@ -42,6 +42,8 @@
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/render/pipeline/tally_tree.h"
 #include "scratch_pool.h"
+#include "shade_slice.h"
+#include "slice_transfer.h"
 
 namespace radcl::render {
 
@@ -54,7 +56,8 @@ struct Renderer::Impl {
   device::Context& ctx;
   geometry::SceneGeometry geom;
   CompiledScene cs;
-  PhaseProfile prof; // before the program: its lifetime includes building it
+  PhaseProfile prof{
+      settings.tuning.profile}; // before the program: its lifetime includes building it
   device::Program program;
   device::Kernel shade, accumulate, shadow_step, pack, shadow_view, shadow_view_counted, offsets;
   device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
@@ -83,17 +86,18 @@ struct Renderer::Impl {
   // copies: the path every chunk waits on) whenever those have work, and back to tracing ahead
   // when they have none. Made once: a cache build runs hundreds of batches.
   tbb::task_arena ahead_arena{tbb::task_arena::automatic, 1,
-                              std::getenv("RADCL_AHEAD_NORMAL") ? tbb::task_arena::priority::normal
-                                                                : tbb::task_arena::priority::low};
+                              settings.tuning.ahead_normal_priority
+                                  ? tbb::task_arena::priority::normal
+                                  : tbb::task_arena::priority::low};
   // Per-wave device buffers and host queues, kept between waves and batches.
   ScratchPool scratch{ctx};
   std::vector<RayQueue> spare_rays;
   std::vector<HitQueue> spare_hits;
   // The current generation's rays on the device (GPU); gen_queue is its host copy, whose rows
   // shade_slice names by address.
-  GenerationMirror mirror{ctx};
+  GenerationMirror mirror{ctx, settings.tuning.generation_mirror};
   std::span<const rc_ray> gen_queue;
-  // Rays of a generation traced and shaded together (RADCL_CHUNK_RAYS sets it, for tests and
+  // Rays of a generation traced and shaded together (tuning.chunk_rays sets it, for tests and
   // tuning): large enough that launches and transfers are a small part of a chunk's time,
   // small enough that its scratch stays in the caches and in reused pages. On a device that
   // shares the host's memory (PoCL) 2^16 was fastest (office, -ab 2 -ad 1024 on 2 cores:
@@ -114,6 +118,15 @@ struct Renderer::Impl {
   // One batch: its primaries, then each generation of their children, in chunks.
   void render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
                     std::size_t first_index);
+  // Its steps: each primary's result slot, its first rays in `queue`, the -I meters' hits that
+  // stand in for the first generation's trace (none without -I), then every generation.
+  void assign_slots(std::span<const PrimaryRay> prim, std::size_t first_index);
+  void start_primaries(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
+                       RayQueue& queue, std::size_t first_index);
+  std::vector<rc_hit> meter_hits(std::span<const PrimaryRay> prim, RayQueue& queue) const;
+  void trace_generations(RayQueue& queue, RayQueue& next, HitQueue& hits,
+                         const std::vector<rc_hit>& meters, std::span<PrimaryResult> res,
+                         std::vector<Vec3d>& sums);
   // A wave's children join the next wave; while the cache is built, its record requests (they
   // are not rays) go to `misses` instead, in the same order.
   void append_children(const std::vector<rc_ray>& children, RayQueue& next);
@@ -200,17 +213,11 @@ struct Renderer::Impl {
                 device::Buffer& nspawn, device::Buffer& shadow_off, device::Buffer& spawn_off,
                 std::size_t n, bool with_spawn, device::Buffer& shadows, device::Buffer& spawned);
   // The shadow views read with the children and the sums with the shadow steps, in one wait
-  // each (RADCL_FEWER_WAITS=0: each in a wait of its own, to measure what they save).
-  const bool fewer_waits = [] {
-    const char* e = std::getenv("RADCL_FEWER_WAITS");
-    return !(e && std::string(e) == "0");
-  }();
+  // each (tuning.fewer_waits off: each in a wait of its own, to measure what they save).
+  const bool fewer_waits = settings.tuning.fewer_waits;
   // On a GPU a slice's children are read back while the host traces its shadow rays
-  // (RADCL_CHILDREN_LATER=0: in the same wait as the shadow views, before the tracing).
-  const bool children_later_on = [] {
-    const char* e = std::getenv("RADCL_CHILDREN_LATER");
-    return !(e && std::string(e) == "0");
-  }();
+  // (tuning.children_later off: in the same wait as the shadow views, before the tracing).
+  const bool children_later_on = settings.tuning.children_later;
   std::vector<char> peek_sh, peek_sp; // host copies of the slots where the device is not the host
   // Slot sizes for a chunk: the counts of an even spread of its rays (at most 512 of them,
   // counted by rc_shade's count mode), enough room for about 98% of them.
@@ -223,6 +230,15 @@ struct Renderer::Impl {
   // again into exactly sized room. The records are packed in ray order either way.
   void shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n, std::vector<Vec3d>& sums,
                    RayQueue& next);
+  // Its stages (shade_slice.cpp): rc_shade into the slots and the counts read; the records
+  // placed and rays that did not fit shaded again; the shadow rays traced and summed; the
+  // totals added to the sums or the tally.
+  void launch_slice(ShadeSlice& s);
+  void place_slice(ShadeSlice& s, RayQueue& next);
+  void finish_slice(ShadeSlice& s, std::vector<Vec3d>& sums, RayQueue& next);
+  void add_slice(const ShadeSlice& s, std::vector<Vec3d>& sums);
+  // How a slice's data crosses between host and device (slice_transfer.h), chosen once.
+  const std::unique_ptr<SliceTransfer> transfer = make_slice_transfer(ctx);
   // Shades the rays `over` (slice indices) again, their records written into exact room, and
   // puts them in their places in the slice's packed records.
   void reshade(const rc_ray* rays, const rc_hit* hit, const std::vector<std::uint32_t>& over,
@@ -247,8 +263,8 @@ struct Renderer::Impl {
   // and its children in `next` (not moved while it runs); the per-ray vectors it reads are
   // swapped out of shade_scratch into tally_in. Only on a device apart from the host: PoCL's
   // kernels keep every core busy, and there the task only slowed the shading (office, 2,000
-  // sensors at -aa 0 -ad 1024 on 2 cores: 2.93 s against 2.77 s). RADCL_TALLY_BESIDE=1 or 0
-  // says otherwise; RADCL_PROFILE=waves, which times the tally's steps, feeds it in line.
+  // sensors at -aa 0 -ad 1024 on 2 cores: 2.93 s against 2.77 s). tuning.tally_beside says
+  // otherwise; RADCL_PROFILE=waves, which times the tally's steps, feeds it in line.
   struct TallyInputs {
     std::vector<std::uint32_t> spawn_off, nsp;
     std::vector<std::uint8_t> cells;
@@ -256,11 +272,8 @@ struct Renderer::Impl {
   } tally_in;
   tbb::task_group tally_task;
   bool tally_pending = false;
-  std::span<const rc_hit> tally_hits; // what the pending tally reads
-  const int tally_beside_env = [] {   // -1: the device decides
-    const char* e = std::getenv("RADCL_TALLY_BESIDE");
-    return e && *e ? (std::string(e) == "0" ? 0 : 1) : -1;
-  }();
+  std::span<const rc_hit> tally_hits;                        // what the pending tally reads
+  const int tally_beside_env = settings.tuning.tally_beside; // -1: the device decides
   // The slice [rays, rays + n) shaded: its totals, children counts and offsets, and hemisphere
   // marks are those in shade_scratch.
   void feed_tally(const rc_ray* rays, const rc_hit* hit, rc_ray* children, std::size_t n);
@@ -281,9 +294,7 @@ struct Renderer::Impl {
   // says whether request k was blocked (estimates stay 1).
   // `view`: the requests' views when the caller had them made (view_shadows_later, read in
   // the same wait as its own transfers); null: made here.
-  struct ShadowView {
-    rc_float4 org, dir; // dir.w: reach (kernels' rc_shadow_view)
-  };
+  using ShadowView = render::ShadowView;
   // The device's kBlocked buffer holds the same flags as `blocked` once it returns.
   // `after_step`: commands enqueued after each step of the last chunk, in that step's wait;
   // true when they ran after the last step (so their results stand).
@@ -298,6 +309,18 @@ struct Renderer::Impl {
   bool trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view, std::size_t first,
                           std::size_t n, std::uint8_t* blocked,
                           const std::function<void()>& after_step);
+  // Its steps: the requests that are rays into shadow_cur (their slots in shadow_slot); their
+  // hits from Embree, each decided on the host where it can be (shadow_decided); the undecided
+  // ones packed in order (their count returned; blocked flags of those that reached written);
+  // rc_shadow_step over them, whose states come back in shadow_state (and the next views, where
+  // they came along: else null).
+  void gather_shadow_rays(const ShadowView* view, std::size_t first, std::size_t n);
+  void trace_shadow_hits(std::size_t m, bool decide);
+  std::size_t keep_undecided(std::size_t m, std::size_t first, std::size_t n,
+                             std::uint8_t* blocked);
+  const ShadowView* step_shadows(device::Buffer& shadows, std::size_t m,
+                                 const std::function<void()>& after_step,
+                                 PhaseProfile::StepClock& clock);
   // A step's rays, their answers, states and slots, kept from step to step.
   std::vector<ShadowView> shadow_cur;
   HitQueue shadow_hits{PinnedAlloc<rc_hit>(&ctx)}; // pinned: they cross without a copy
@@ -375,6 +398,24 @@ struct Renderer::Impl {
   // one of its first pass without a miss, so it is computed as Radiance computes it once the
   // records it needs exist.
   static constexpr int kRounds = 12;
+  // One pass of build_render over some primaries. While it lives they start as `st` says and
+  // their misses are reported as record requests, unless it is the last pass (which alone keeps
+  // the -as tally and samples what still misses); end() restores the renderer's state and says
+  // whether the pass's values were thrown away.
+  class CachePass {
+  public:
+    CachePass(Impl& im, std::span<const RayStart> st, bool last);
+    ~CachePass();
+    CachePass(const CachePass&) = delete;
+    CachePass& operator=(const CachePass&) = delete;
+    bool end();
+
+  private:
+    Impl& im_;
+    const bool tree_;
+    const std::span<const RayStart> starts_;
+    bool ended_ = false;
+  };
   bool throwaway = false; // this pass's values are thrown away: no shadow rays, no sums
   void build_render(std::span<const PrimaryRay> rays, std::span<PrimaryResult> results,
                     std::span<const RayStart> st);
@@ -395,6 +436,22 @@ struct Renderer::Impl {
   // ambient level deeper (their own misses make records first), then the record kernel
   // (ambient/record_maker.h) turns each complete hemisphere into a record.
   void sample_hemispheres(const std::vector<const rc_ray*>& chosen);
+  // The hemispheres of the chosen misses that can have samples (their weight and depth allow
+  // any), each one's samples as primaries and how they start.
+  struct NewHemispheres {
+    std::vector<rc_amb_hemi> hemis;
+    std::vector<PrimaryRay> rays;
+    std::vector<RayStart> start;
+  };
+  NewHemispheres hemisphere_rays(const std::vector<const rc_ray*>& chosen);
+  // While it lives, renders are a record's samples, one ambient level deeper.
+  struct Nested {
+    Impl& im;
+    explicit Nested(Impl& i) : im(i) { ++im.nesting; }
+    ~Nested() { --im.nesting; }
+    Nested(const Nested&) = delete;
+    Nested& operator=(const Nested&) = delete;
+  };
   // -as for a record (Radiance's ambsupersamp): where the squared brightness differences of a
   // division's neighbours say the hemisphere varies most, more samples of that division are
   // rendered, as many as its share of the budget -as x weight (when that exceeds 8 and every

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "radcl/luminance.h"
 #include "radcl/rng.h"
 
 #include <tbb/blocked_range.h>
@@ -13,10 +14,6 @@
 namespace radcl::render {
 
 namespace {
-
-double bright(const TallyTree::Vec3d& c) {
-  return 0.265074126 * c[0] + 0.670114631 * c[1] + 0.064811243 * c[2];
-}
 
 constexpr double kFtiny = 1e-6;
 
@@ -155,24 +152,9 @@ void TallyTree::shaded(const rc_ray& ray, const rc_hit& hit, const rc_float4& to
   settle(ray.tally, requests_);
 }
 
-void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
-                             rc_ray* children, const std::uint32_t* off, const std::uint32_t* count,
-                             const std::uint8_t* cells, std::size_t n) {
-  if (trace_) {
-    for (std::size_t i = 0; i < n; ++i)
-      shaded(rays[i], hits[i], totals[i], children + off[i], count[i]);
-    return;
-  }
-  std::optional<PhaseProfile::StepClock> clock;
-  if (prof_) clock.emplace(*prof_);
-  const auto mark = [&](PhaseProfile::Step s) {
-    if (clock) clock->mark(s);
-  };
-  new_nodes_.resize(n);
-  new_hemis_.resize(n);
-  plain_.resize(n);
-  // Each ray's hemispheres and the nodes they need, then their places in serial order; and
-  // whether the slice runs in primary order (see below), found on the way.
+bool TallyTree::count_children(const rc_ray* rays, const rc_ray* children, const std::uint32_t* off,
+                               const std::uint32_t* count, const std::uint8_t* cells,
+                               std::size_t n) {
   std::atomic<bool> unordered{false};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
@@ -203,6 +185,28 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
       plain_[i] = plain;
     }
   });
+  return unordered.load();
+}
+
+void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_float4* totals,
+                             rc_ray* children, const std::uint32_t* off, const std::uint32_t* count,
+                             const std::uint8_t* cells, std::size_t n) {
+  if (trace_) {
+    for (std::size_t i = 0; i < n; ++i)
+      shaded(rays[i], hits[i], totals[i], children + off[i], count[i]);
+    return;
+  }
+  std::optional<PhaseProfile::StepClock> clock;
+  if (prof_) clock.emplace(*prof_);
+  const auto mark = [&](PhaseProfile::Step s) {
+    if (clock) clock->mark(s);
+  };
+  new_nodes_.resize(n);
+  new_hemis_.resize(n);
+  plain_.resize(n);
+  // Each ray's hemispheres and the nodes they need, then their places in serial order; and
+  // whether the slice runs in primary order (see below), found on the way.
+  const bool unordered = count_children(rays, children, off, count, cells, n);
   mark(PhaseProfile::StepTallyChildren);
   const auto node0 = static_cast<std::uint32_t>(nodes_.size());
   const auto hemi0 = static_cast<std::uint32_t>(hemis_.size());
@@ -252,7 +256,7 @@ void TallyTree::shaded_slice(const rc_ray* rays, const rc_hit* hits, const rc_fl
   };
   mark(PhaseProfile::StepTallyHemis);
   constexpr std::size_t kRun = 4096;
-  if (unordered.load() || n < 2 * kRun) {
+  if (unordered || n < 2 * kRun) {
     finish(0, n, requests_);
     mark(PhaseProfile::StepTallySettle);
     return;

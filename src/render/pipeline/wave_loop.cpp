@@ -45,14 +45,12 @@ void texture_perts(Renderer::Impl& im, std::optional<device::Kernel>& k,
 } // namespace
 
 std::size_t Renderer::Impl::chunk_rays() const {
-  if (const char* e = std::getenv("RADCL_CHUNK_RAYS"); e && *e)
-    return std::max<std::size_t>(1, std::strtoull(e, nullptr, 10));
+  if (settings.tuning.chunk_rays) return settings.tuning.chunk_rays;
   return ctx.zero_copy() ? std::size_t{1} << 16 : std::size_t{1} << 18;
 }
 
 std::size_t Renderer::Impl::generation_rays() const {
-  if (const char* e = std::getenv("RADCL_GENERATION_RAYS"); e && *e)
-    return std::max<std::size_t>(1, std::strtoull(e, nullptr, 10));
+  if (settings.tuning.generation_rays) return settings.tuning.generation_rays;
   if (!ctx.zero_copy()) return std::size_t{1} << 22;
   // On PoCL 2^18 with few cores: each generation's queues are memory paged in once per
   // process, at a cost the run does not amortise (1,980 sensors at -aa 0 -ad 1024 on 2 cores:
@@ -89,14 +87,7 @@ void Renderer::Impl::run(std::span<const PrimaryRay> rays, std::span<PrimaryResu
 void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
                                   std::size_t first_index) {
   Timed timed(prof, Phase::Batch);
-  batch_first = first_index;
-  id_slot.clear();
-  if (std::any_of(prim.begin(), prim.end(), [](const PrimaryRay& r) { return r.id != RC_NONE; })) {
-    std::vector<std::uint32_t> ids(prim.size());
-    for (std::size_t k = 0; k < prim.size(); ++k)
-      ids[k] = prim[k].id != RC_NONE ? prim[k].id : static_cast<std::uint32_t>(first_index + k);
-    id_slot.assign(ids);
-  }
+  assign_slots(prim, first_index);
   // The generation queues come from a pool that outlives the batch: growing fresh ones to
   // millions of rays in every batch paged in (and cleared) new memory each time.
   Spare<RayQueue> queue_hold(spare_rays, RayQueue(PinnedAlloc<rc_ray, true>(&ctx))),
@@ -120,6 +111,38 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
     tally.set_profile(&prof);
   }
+  start_primaries(prim, res, queue, first_index);
+  const std::vector<rc_hit> meters = meter_hits(prim, queue);
+  timed.stop();
+  trace_generations(queue, next_hold.v, hits, meters, res, sums);
+  timed.start(Phase::Batch);
+  const auto finish = [&](std::size_t i) {
+    res[i].value = tree ? tally.sum(i) : sums[i];
+    res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
+  };
+  if (settings.trace != RenderSettings::Trace::Off) {
+    for (std::size_t i = 0; i < prim.size(); ++i) {
+      finish(i);
+      res[i].traced = traced(i);
+    }
+  } else {
+    for_rows(prim.size(), finish);
+  }
+}
+
+void Renderer::Impl::assign_slots(std::span<const PrimaryRay> prim, std::size_t first_index) {
+  batch_first = first_index;
+  id_slot.clear();
+  if (std::any_of(prim.begin(), prim.end(), [](const PrimaryRay& r) { return r.id != RC_NONE; })) {
+    std::vector<std::uint32_t> ids(prim.size());
+    for (std::size_t k = 0; k < prim.size(); ++k)
+      ids[k] = prim[k].id != RC_NONE ? prim[k].id : static_cast<std::uint32_t>(first_index + k);
+    id_slot.assign(ids);
+  }
+}
+
+void Renderer::Impl::start_primaries(std::span<const PrimaryRay> prim, std::span<PrimaryResult> res,
+                                     RayQueue& queue, std::size_t first_index) {
   const bool in_medium = has_medium(settings);
   const Vec3d medium = in_medium ? settings.me : Vec3d{0, 0, 0};
   for_rows(prim.size(), [&](std::size_t i) {
@@ -158,6 +181,10 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     }
     root_depth[i] = r.depth;
   });
+}
+
+std::vector<rc_hit> Renderer::Impl::meter_hits(std::span<const PrimaryRay> prim,
+                                               RayQueue& queue) const {
   // -I: the measurement point is a diffuse meter facing the given direction, meter_offset()
   // along it (where Radiance's reversed primary ray meets it); its hits stand in for the first
   // generation's trace. (A vector of its own: the pooled `hits` keeps its room for the chunks.)
@@ -177,8 +204,12 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
       queue[i].dir = f4(-d[0], -d[1], -d[2], INFINITY);
     }
   }
+  return meters;
+}
 
-  timed.stop();
+void Renderer::Impl::trace_generations(RayQueue& queue, RayQueue& next, HitQueue& hits,
+                                       const std::vector<rc_hit>& meters,
+                                       std::span<PrimaryResult> res, std::vector<Vec3d>& sums) {
   // Each generation of rays goes through in chunks: trace, leak tests and shading of one
   // chunk before the next, so the per-ray scratch (Embree's answers, slots, shadow requests)
   // is bounded by the chunk and reused, not freshly mapped and cleared for a generation of
@@ -193,7 +224,6 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   const bool texture_pert = nesting == 0 && starts.empty() && meters.empty() &&
                             (cs.features.has(RC_OBJ_TEXFUNC) || cs.features.has(RC_OBJ_TEXDATA));
   std::optional<device::Kernel> pert_kernel;
-  RayQueue& next = next_hold.v;
   // Three chunks' hits in turn: the one shaded, the next one traced beside it, and the last
   // one, which the tally fed beside the shading (feed_tally) may still read.
   Spare<HitQueue> ahead_hold(spare_hits, HitQueue(PinnedAlloc<rc_hit>(&ctx))),
@@ -211,7 +241,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     }
   } tally_wait{*this};
   const std::size_t chunk = chunk_rays();
-  const bool overlap = !std::getenv("RADCL_NO_OVERLAP");
+  const bool overlap = settings.tuning.overlap;
   // A chunk's room at once: pinned memory is costly to take and give back.
   for (HitQueue* h : {&hits, &ahead, &behind})
     if (h->capacity() < chunk) h->reserve(chunk);
@@ -242,8 +272,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
       if (first_wave && texture_pert) texture_perts(*this, pert_kernel, part, hits.data(), res);
       // Shade in slices whose slots fit a modest allocation (a slice keeps queue order, so
       // sums stay in order).
-      std::size_t limit = std::size_t{1} << 26;
-      if (const char* e = std::getenv("RADCL_WAVE_BYTES")) limit = std::strtoull(e, nullptr, 10);
+      const std::size_t limit = settings.tuning.slice_bytes;
       size_slots(part, hits);
       for (std::size_t sa = 0; sa < part.size();) {
         std::size_t per_ray = cap_shadow * sizeof(rc_shadow) + cap_spawn * sizeof(rc_ray);
@@ -269,19 +298,6 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     mirror.advance();
   }
   gen_queue = {};
-  timed.start(Phase::Batch);
-  const auto finish = [&](std::size_t i) {
-    res[i].value = tree ? tally.sum(i) : sums[i];
-    res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
-  };
-  if (settings.trace != RenderSettings::Trace::Off) {
-    for (std::size_t i = 0; i < prim.size(); ++i) {
-      finish(i);
-      res[i].traced = traced(i);
-    }
-  } else {
-    for_rows(prim.size(), finish);
-  }
 }
 
 void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req, RayQueue& next) {

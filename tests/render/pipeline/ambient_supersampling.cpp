@@ -23,7 +23,7 @@ struct SphereRun {
 
 // Irradiance meters `pts` in `octree` (scenes folder), -aa 0 with the given -ab, -ad, -as and -lw.
 SphereRun meters(const std::string& octree, const std::string& pts, int ab, int ad, int as,
-                 double lw, std::size_t wave = 1u << 18) {
+                 double lw, std::size_t wave = 1u << 18, std::size_t chunk_rays = 0) {
   std::string dir = test::data("scenes");
   char cwd[4096];
   EXPECT_NE(getcwd(cwd, sizeof cwd), nullptr);
@@ -36,6 +36,7 @@ SphereRun meters(const std::string& octree, const std::string& pts, int ab, int 
   st.lw = lw;
   st.irradiance_I = true;
   st.wave_size = wave;
+  st.tuning.chunk_rays = chunk_rays;
   render::Renderer r(ls, st, device::default_context());
   std::vector<render::PrimaryRay> rays;
   for (const auto& s : test::read_rays(test::data("scenes/" + pts)))
@@ -57,8 +58,8 @@ SphereRun meters(const std::string& octree, const std::string& pts, int ab, int 
   return run;
 }
 
-SphereRun sphere(int ab, int as, std::size_t wave = 1u << 18) {
-  return meters("sphere.oct", "sphere_wall.pts", ab, 512, as, 1e-5, wave);
+SphereRun sphere(int ab, int as, std::size_t wave = 1u << 18, std::size_t chunk_rays = 0) {
+  return meters("sphere.oct", "sphere_wall.pts", ab, 512, as, 1e-5, wave, chunk_rays);
 }
 
 double exact(int ab) {
@@ -161,13 +162,11 @@ TEST(AmbientSupersampling, IndependentOfWaveSize) {
       EXPECT_EQ(a.res[i].value[c], b.res[i].value[c]) << "ray " << i;
 }
 
-// ... nor on how a generation of rays is chunked (RADCL_CHUNK_RAYS): the tally tree sees every
+// ... nor on how a generation of rays is chunked (tuning.chunk_rays): the tally tree sees every
 // ray in queue order either way.
 TEST(AmbientSupersampling, IndependentOfChunkSize) {
   SphereRun a = sphere(2, 128);
-  setenv("RADCL_CHUNK_RAYS", "300", 1);
-  SphereRun b = sphere(2, 128);
-  unsetenv("RADCL_CHUNK_RAYS");
+  SphereRun b = sphere(2, 128, 1u << 18, 300);
   ASSERT_EQ(a.res.size(), b.res.size());
   for (std::size_t i = 0; i < a.res.size(); ++i)
     for (int c = 0; c < 3; ++c)

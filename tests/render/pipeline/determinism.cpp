@@ -15,7 +15,8 @@ using namespace radcl;
 
 namespace {
 
-std::vector<render::PrimaryResult> run(std::size_t wave, int threads, std::uint32_t seed) {
+std::vector<render::PrimaryResult> run(std::size_t wave, int threads, std::uint32_t seed,
+                                       const render::PipelineTuning& tuning = {}) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   std::string dir = test::data("scenes");
   char cwd[4096];
@@ -29,6 +30,7 @@ std::vector<render::PrimaryResult> run(std::size_t wave, int threads, std::uint3
   st.irradiance_I = true;
   st.seed = seed;
   st.wave_size = wave;
+  st.tuning = tuning;
   render::Renderer r(ls, st, device::default_context());
   std::vector<render::PrimaryRay> rays;
   for (const auto& s : test::read_rays(test::data("scenes/luminaires_grid.pts")))
@@ -57,26 +59,18 @@ TEST(Determinism, SameAcrossWaveSizesAndThreads) {
 }
 
 // Waves whose shadow and child rays exceed the device's allocation limit are shaded in slices;
-// a tiny limit (RADCL_WAVE_BYTES) slices every wave and must not change a bit.
+// a tiny limit (tuning.slice_bytes) slices every wave and must not change a bit.
 TEST(Determinism, SameWhenWavesAreSliced) {
   auto base = run(1 << 18, 2, 42);
-  setenv("RADCL_WAVE_BYTES", "4096", 1);
-  auto sliced = run(1 << 18, 2, 42);
-  unsetenv("RADCL_WAVE_BYTES");
+  render::PipelineTuning tiny;
+  tiny.slice_bytes = 4096;
+  auto sliced = run(1 << 18, 2, 42, tiny);
   EXPECT_TRUE(identical(base, sliced));
 }
 
-// Each generation of rays is traced and shaded in chunks (RADCL_CHUNK_RAYS); chunks of a few
-// rays (here with -I meters, whose first hits are made, not traced) must not change a bit.
-TEST(Determinism, SameWhateverTheChunkSize) {
-  auto base = run(1 << 18, 2, 42);
-  for (const char* c : {"1", "37", "4096"}) {
-    setenv("RADCL_CHUNK_RAYS", c, 1);
-    auto chunked = run(1 << 18, 2, 42);
-    unsetenv("RADCL_CHUNK_RAYS");
-    EXPECT_TRUE(identical(base, chunked)) << "chunks of " << c << " rays";
-  }
-}
+// The chunk size's test (RADCL_CHUNK_RAYS, from 1 ray up) is
+// StabilityDeterminism.SameWhateverTheChunkSize: through the programs, so it also checks that
+// the variable reaches the pipeline.
 
 TEST(Determinism, SeedChangesTheNoise) {
   auto a = run(1 << 18, 2, 1), b = run(1 << 18, 2, 2);

@@ -1,5 +1,6 @@
-// Polygonal fonts of the text patterns (scene-format.md §4.2): Radiance's font-file format read
-// on the host, and the three ways Radiance spaces a line of text in such a font.
+// Polygonal fonts of the text patterns (../shared/docs/radiance/scene-format.md §4.2): Radiance's
+// font-file format read on the host, and the three ways Radiance spaces a line of text in such a
+// font.
 #pragma once
 
 #include <array>

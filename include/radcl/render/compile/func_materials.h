@@ -1,11 +1,11 @@
 // The materials with function files: the BRDF materials plasfunc, metfunc, transfunc,
-// plasdata, metdata, transdata and BRTDfunc (scene-format.md §3.11, §3.12), and the anisotropic
-// plastic2, metal2, trans2 and ashik2 (§3.3, §3.4), whose orientation vector is three
-// expressions, and prism1 and prism2 (§3.10), whose redirections are four expressions each. Each
-// compiled material carries a function record in the pattern buffer (rc_material::func): its real
-// arguments, its function-space transform and a descriptor of its functions, written by
-// PatternCompiler (src/render/compile/func_materials.cpp) and read by kernels/materials/brdf_func.cl and
-// kernels/materials/aniso.cl.
+// plasdata, metdata, transdata and BRTDfunc (../shared/docs/radiance/scene-format.md §3.11, §3.12),
+// and the anisotropic plastic2, metal2, trans2 and ashik2 (§3.3, §3.4), whose orientation vector is
+// three expressions, and prism1 and prism2 (§3.10), whose redirections are four expressions each.
+// Each compiled material carries a function record in the pattern buffer (rc_material::func): its
+// real arguments, its function-space transform and a descriptor of its functions, written by
+// PatternCompiler (src/render/compile/func_materials.cpp) and read by
+// kernels/materials/brdf_func.cl and kernels/materials/aniso.cl.
 #pragma once
 
 #include "radcl/device_types.h"

@@ -1,10 +1,10 @@
-// Patterns and textures for the kernels (scene-format.md §4, calc-language.md §5): each
-// brightfunc, colorfunc or texfunc becomes an rc_pattern record whose expressions are compiled
-// to OpenCL C by the calc module, reached through one generated dispatcher, rc_pattern_call().
-// brightdata, colordata, texdata and colorpict also pack their data (render/compile/pattern_data.h)
-// into the argument buffer and call their functions of the interpolated values through a
-// second dispatcher, rc_pattern_fcall(). brighttext, colortext and mixtext pack their text and
-// font instead (render/compile/text_pattern.h).
+// Patterns and textures for the kernels (../shared/docs/radiance/scene-format.md §4,
+// ../shared/docs/radiance/calc-language.md §5): each brightfunc, colorfunc or texfunc becomes an
+// rc_pattern record whose expressions are compiled to OpenCL C by the calc module, reached through
+// one generated dispatcher, rc_pattern_call(). brightdata, colordata, texdata and colorpict also
+// pack their data (render/compile/pattern_data.h) into the argument buffer and call their functions
+// of the interpolated values through a second dispatcher, rc_pattern_fcall(). brighttext, colortext
+// and mixtext pack their text and font instead (render/compile/text_pattern.h).
 #pragma once
 
 #include <array>
@@ -84,8 +84,8 @@ private:
   std::uint32_t request_brdf(const std::string& name, int nargs, const std::string& context,
                              const std::string& where);
   std::string brdf_source() const;
-  // BSDF and aBSDF (src/render/compile/bsdf_materials.cpp): their thickness and up-vector expressions,
-  // and their XML file's device tables (packed into `args` once per file).
+  // BSDF and aBSDF (src/render/compile/bsdf_materials.cpp): their thickness and up-vector
+  // expressions, and their XML file's device tables (packed into `args` once per file).
   std::vector<std::uint32_t> compile_bsdf(const scene::Object& o, const std::string& where,
                                           std::vector<float>& args, std::size_t& transform);
   std::array<std::uint32_t, 4> bsdf_file(const std::string& file, const std::string& where,

@@ -1,6 +1,7 @@
-// Data files and pictures of brightdata, colordata, texdata and colorpict (scene-format.md
-// §4.1): read on the host into n-dimensional grids, then packed into the kernels' float
-// argument buffer where kernels/patterns/pattern_data.cl interpolates them.
+// Data files and pictures of brightdata, colordata, texdata and colorpict
+// (../shared/docs/radiance/scene-format.md §4.1): read on the host into n-dimensional grids, then
+// packed into the kernels' float argument buffer where kernels/patterns/pattern_data.cl
+// interpolates them.
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
-// brighttext, colortext and mixtext (scene-format.md §4, Radiance's text.c): the text, its font
-// and its layout are prepared on the host and packed into the kernels' float argument buffer,
-// where kernels/patterns/text.cl tests whether a hit lies inside a glyph.
+// brighttext, colortext and mixtext (../shared/docs/radiance/scene-format.md §4, Radiance's
+// text.c): the text, its font and its layout are prepared on the host and packed into the kernels'
+// float argument buffer, where kernels/patterns/text.cl tests whether a hit lies inside a glyph.
 #pragma once
 
 #include <array>

@@ -17,6 +17,7 @@
 #include <time.h>
 
 #include "radcl/device/buffer.h"
+#include "radcl/render/pipeline/tuning.h"
 
 namespace radcl::render {
 
@@ -42,12 +43,9 @@ enum class Phase {
 
 class PhaseProfile {
 public:
-  PhaseProfile()
-      : on_(std::getenv("RADCL_PROFILE") != nullptr), t0_(std::chrono::steady_clock::now()) {
-    const char* p = std::getenv("RADCL_PROFILE");
-    waves_ = p && std::string(p) == "waves";
-    raw_ = p && std::string(p) == "raw";
-  }
+  explicit PhaseProfile(PipelineTuning::Profile mode = PipelineTuning::Profile::Off)
+      : on_(mode != PipelineTuning::Profile::Off), waves_(mode == PipelineTuning::Profile::Waves),
+        raw_(mode == PipelineTuning::Profile::Raw), t0_(std::chrono::steady_clock::now()) {}
   bool on() const { return on_; }
   // RADCL_PROFILE=waves: the shading kernel is waited for on its own, and its time and that of
   // the slot reads after it are summed by wave size (the extra wait costs a little).
@@ -208,7 +206,7 @@ public:
 
 private:
   static constexpr std::array<std::size_t, 5> kWaveBins{64, 256, 1024, 8192, 65536};
-  bool on_, waves_ = false, raw_ = false;
+  bool on_, waves_, raw_;
   std::uint64_t raw_rays_ = 0;
   double raw_sec_ = 0;
   std::array<std::uint64_t, 6> wave_n_{}, wave_rays_{};

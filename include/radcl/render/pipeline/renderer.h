@@ -1,5 +1,5 @@
 // The wavefront renderer: Embree traversal on the host, shading in OpenCL kernels, rays in
-// waves (design.md §3). Primary rays in, one result per primary out.
+// waves (../shared/docs/design.md §3). Primary rays in, one result per primary out.
 #pragma once
 
 #include <array>
@@ -12,6 +12,7 @@
 #include "radcl/ambient/record.h"
 #include "radcl/geometry/scene_geometry.h"
 #include "radcl/render/compile/compiled_scene.h"
+#include "radcl/render/pipeline/tuning.h"
 #include "radcl/scene/loader.h"
 
 namespace radcl::device {
@@ -22,7 +23,8 @@ namespace radcl::render {
 
 using Vec3d = std::array<double, 3>;
 
-// Rendering settings with Radiance's meaning (cli-rtrace-rpict.md §2); defaults are rtrace's.
+// Rendering settings with Radiance's meaning (../shared/docs/radiance/cli-rtrace-rpict.md §2);
+// defaults are rtrace's.
 struct RenderSettings {
   double ds = 0.2, dj = 0, dt = 0.03, dc = 0.75;
   int dr = 2;   // -dr: mirrors a virtual source may be relayed through (rpict's default is 1)
@@ -66,6 +68,8 @@ struct RenderSettings {
   // too (-oT).
   enum class Trace { Off, Rays, RaysAndShadows };
   Trace trace = Trace::Off;
+  // How the pipeline runs (the same outputs whatever it says, leak_test aside).
+  PipelineTuning tuning;
 };
 
 // One ray of a primary's tree in trace mode (rtrace -ot/-oT), in Radiance's terms.

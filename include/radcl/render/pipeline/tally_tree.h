@@ -116,6 +116,10 @@ private:
                  std::size_t m, std::uint32_t node, std::uint32_t hemi);
   // The number of a hemisphere's first samples from children[k] on (0: not a sample).
   static std::size_t run_length(const rc_ray* children, std::size_t k, std::size_t nchildren);
+  // shaded_slice's first step: each ray's new nodes and hemispheres (into new_nodes_,
+  // new_hemis_) and plain children (plain_); true where the slice is not in primary order.
+  bool count_children(const rc_ray* rays, const rc_ray* children, const std::uint32_t* off,
+                      const std::uint32_t* count, const std::uint8_t* cells, std::size_t n);
   // Per slice, kept: each ray's new nodes, hemispheres and plain children.
   std::vector<std::uint32_t> new_nodes_, new_hemis_, plain_;
   // Trace mode: a node of its own for a child ray under `parent`, recorded under `rec`.
