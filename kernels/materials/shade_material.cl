@@ -33,8 +33,8 @@ static float3 rc_light_emission(const rc_scene_args* S, const rc_material* m, co
   return rad;
 }
 
-#include "lights/direct.cl"
 #include "materials/raynormal.cl"
+#include "lights/direct.cl"
 #ifdef RADCL_HAS_MIST
 #include "pipeline/mist.cl"
 #endif

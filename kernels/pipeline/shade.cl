@@ -7,11 +7,11 @@
  * Its parts: hit_output.cl (where a hit writes), hemisphere.cl (indirect samples),
  * direct.cl (source samples), shade_material.cl (materials), shadow_step.cl (shadow rays
  * through transmitting surfaces), this file (the ray's dispatch and the kernels). */
-#include "lights/sources.cl"
-#include "lights/virtual.cl"
 #include "radcl/device_types.h"
 #include "radcl/luminance.h"
 #include "radcl/rng.h"
+#include "lights/sources.cl"
+#include "lights/virtual.cl"
 
 /* The scene's material modules, after the shared types they use. */
 #include "generated.cl"

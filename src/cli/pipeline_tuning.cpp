@@ -37,7 +37,7 @@ render::PipelineTuning tuning_from_environment() {
   t.fewer_waits = !is_zero(env("RADCL_FEWER_WAITS"));
   t.children_later = !is_zero(env("RADCL_CHILDREN_LATER"));
   if (const char* e = env("RADCL_TALLY_BESIDE"); e && *e) t.tally_beside = is_zero(e) ? 0 : 1;
-  t.generation_mirror = !is_zero(env("RADCL_MIRROR"));
+  t.keep_generations_on_device = !is_zero(env("RADCL_MIRROR"));
   t.shadow_blockers_on_host = !is_zero(env("RADCL_SHADOW_ON_HOST"));
   t.leak_test = !is_zero(env("RADCL_LEAK_TEST"));
   t.debug_cache = env("RADCL_DEBUG_CACHE") != nullptr;

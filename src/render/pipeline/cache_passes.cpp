@@ -22,71 +22,16 @@ void Renderer::Impl::upload_cache() {
     min_level = std::min<int>(min_level, cache_local[level_seen].lvl);
   const bool leak_test = settings.tuning.leak_test; // off: to measure it
   const std::size_t n = uses_cache(settings) ? cache_local.size() : 0;
-  if (n < (cache_trees.empty() ? 0 : cache_trees.back().to)) {
-    cache_trees.clear();
-    cache = marked = AmbientCacheBuffers{};
-    marked_src.clear();
-  }
-  if (n > (cache_trees.empty() ? 0 : cache_trees.back().to)) {
-    // The new records make a tree after the others; it absorbs the last one while that is not
-    // twice its size (or is small), so sizes fall by half or more along the forest: O(log n)
-    // trees, and each record rebuilt O(log n) times however many uploads a build makes (the
-    // open-plan floor's makes 1,759 onto up to 225,000 records).
-    CacheTree t;
-    t.from = cache_trees.empty() ? 0 : cache_trees.back().to;
-    t.to = n;
-    t.nodes = cache.nodes.size();
-    t.records = cache.records.size();
-    t.mnodes = marked.nodes.size();
-    t.mrecords = marked.records.size();
-    t.msrc = marked_src.size();
-    cache_trees.push_back(t);
-    while (cache_trees.size() >= 2) {
-      CacheTree& a = cache_trees[cache_trees.size() - 2];
-      const CacheTree& b = cache_trees.back();
-      if (2 * (b.to - b.from) < a.to - a.from && a.to - a.from >= kSmallCacheTree) break;
-      a.to = b.to;
-      cache_trees.pop_back();
-    }
-    // Only the last tree changed: it is rebuilt in place after the ones before it.
-    const CacheTree& last = cache_trees.back();
-    const std::span<const ambient::AmbientRecord> recs =
-        std::span(cache_local).subspan(last.from, last.to - last.from);
-    rejoin_ambient_caches(cache, last.nodes, last.records,
-                          build_ambient_cache(recs, {0, 0, 0}, settings.aa),
-                          static_cast<std::uint32_t>(last.from));
-    leaf_of.resize(n);
-    for (std::size_t k = last.records; k < cache.source.size(); ++k)
-      leaf_of[cache.source[k]] = static_cast<std::uint32_t>(k);
-    if (leak_test) {
-      // The marked records' trees over the same ranges, their leaves named by their place in
-      // `cache` for the tester.
-      std::vector<ambient::AmbientRecord> mrecs;
-      marked_src.resize(last.msrc);
-      for (std::size_t i = last.from; i < last.to; ++i)
-        if (cache_local[i].corral) {
-          marked_src.push_back(static_cast<std::uint32_t>(i));
-          mrecs.push_back(cache_local[i]);
-        }
-      rejoin_ambient_caches(marked, last.mnodes, last.mrecords,
-                            build_ambient_cache(mrecs, {0, 0, 0}, settings.aa),
-                            static_cast<std::uint32_t>(last.msrc));
-      to_full.resize(marked.source.size());
-      for (std::size_t j = last.mrecords; j < to_full.size(); ++j)
-        to_full[j] = leaf_of[marked_src[marked.source[j]]];
-    }
-    // The device keeps what comes before the rebuilt tree.
-    amb_records.update(ctx, cache.records, last.records);
-    amb_nodes.update(ctx, cache.nodes, last.nodes);
-  } else if (cache_trees.empty()) {
-    amb_records.update(ctx, cache.records, 0);
-    amb_nodes.update(ctx, cache.nodes, 0);
+  const CacheForest::Change c = forest.update(cache_local, n, settings.aa, leak_test);
+  if (c.any) { // the device keeps what comes before the change
+    amb_records.update(ctx, forest.lookup().records, c.records);
+    amb_nodes.update(ctx, forest.lookup().nodes, c.nodes);
   }
   leak_tester = LeakTester();
-  if (leak_test && !marked.records.empty())
-    leak_tester = LeakTester(&marked, static_cast<float>(settings.aa),
-                             static_cast<float>(settings.ambient_min_radius), &to_full);
-  base.amb.z = static_cast<float>(cache.nodes.size());
+  if (leak_test && !forest.marked().records.empty())
+    leak_tester = LeakTester(&forest.marked(), static_cast<float>(settings.aa),
+                             static_cast<float>(settings.ambient_min_radius), &forest.to_full());
+  base.amb.z = static_cast<float>(forest.lookup().nodes.size());
   if (settings.aw > 0 && uses_cache(settings)) {
     auto v = averaged_ambient_value({settings.av[0], settings.av[1], settings.av[2]}, settings.aw,
                                     cache_records);

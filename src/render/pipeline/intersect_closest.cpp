@@ -114,14 +114,14 @@ void Renderer::Impl::trace(std::span<const rc_ray> queue, HitQueue& hits,
     for (std::size_t i = b * kRange; i < std::min(n, (b + 1) * kRange); ++i) {
       const std::uint32_t f = queue[i].flags;
       if ((f & RC_RAY_MIRRORED) && (f & RC_RAY_KIND_MASK) == RC_RAY_REFLECTED &&
-          queue[i].depth == root_depth[slot(queue[i].primary)] + 1) {
-        PrimaryResult& pr = results[slot(queue[i].primary)];
+          queue[i].depth == batch.root_depth[slot(queue[i].primary)] + 1) {
+        PrimaryResult& pr = batch.results[slot(queue[i].primary)];
         pr.mirror_t = (f & RC_RAY_TILTED) ? 0.0 : gh[i] ? dist(gh[i]->point, pr.point) : 1e10;
       }
       // The straight continuation through transmitting surfaces: its lengths add up (X), each
       // from the surface point the last one met.
       if ((f & RC_RAY_THROUGH) && (f & RC_RAY_KIND_MASK) == RC_RAY_TRANSMITTED) {
-        PrimaryResult& pr = results[slot(queue[i].primary)];
+        PrimaryResult& pr = batch.results[slot(queue[i].primary)];
         const Vec3d& from = pr.through_t < 0 ? pr.point : pr.through_at;
         pr.through_t = std::max(pr.through_t, 0.0) + (gh[i] ? dist(gh[i]->point, from) : 1e10);
         if (gh[i]) pr.through_at = gh[i]->point;

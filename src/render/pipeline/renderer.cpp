@@ -119,21 +119,21 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
 }
 
 void Renderer::Impl::upload_sources() {
-  note_shadow_blockers(cs.sources);
+  shadow_tracer.note_blockers(cs.sources);
   sources = upload(ctx, cs.sources.sources);
   verts = upload(ctx, cs.sources.verts);
-  mirrors = upload(ctx, cs.sources.mirrors);
+  mirror_surfaces = upload(ctx, cs.sources.mirrors);
 }
 
 std::vector<float> Renderer::Impl::pretest(const CompiledSources& so,
                                            const std::vector<rc_shadow>& rays) {
-  note_shadow_blockers(so);
+  shadow_tracer.note_blockers(so);
   sources = upload(ctx, so.sources);
   verts = upload(ctx, so.verts);
-  mirrors = upload(ctx, so.mirrors);
+  mirror_surfaces = upload(ctx, so.mirrors);
   std::vector<std::uint8_t> blocked;
   device::Buffer& b = scratch(kShadows, rays);
-  trace_shadows(b, rays.size(), blocked);
+  shadow_tracer.trace(b, rays.size(), blocked);
   std::vector<rc_shadow> sh(rays.size());
   if (!sh.empty()) read_rows(b, sh.data(), sh.size() * sizeof(rc_shadow));
   std::vector<float> out(sh.size());

@@ -3,8 +3,12 @@
 //   wave_loop.cpp          the driver: batches of primaries, generations of rays, chunks
 //   intersect_closest.cpp  Embree's nearest hits for a chunk, as the kernels' records
 //   leak_test.cpp          Radiance's leak test for the cache records a chunk may use
-//   shade_surface.cpp      rc_shade over a chunk, its records packed, rc_accumulate
-//   intersect_shadow.cpp   shadow rays stepped through Embree and rc_shadow_step
+//   shade_slice.cpp        a slice of a chunk shaded in stages: inputs, rc_shade, records
+//                          placed, shadow rays, rc_accumulate (slice_transfer.h: how its
+//                          data crosses, shared or discrete memory); shade_surface.cpp the
+//                          kernels' launches
+//   shadow_tracer.cpp      shadow rays stepped through Embree and rc_shadow_step (its own
+//                          state: shadow_tracer.h)
 //   cache_passes.cpp       the irradiance cache's build passes and their uploads
 //   cache_hemispheres.cpp  the hemispheres of new records and their -as super-samples
 //   trace_tree.cpp         -tr/-trs trees as rtrace reports them
@@ -27,7 +31,8 @@
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
-#include "generation_mirror.h"
+#include "cache_forest.h"
+#include "generation_copy.h"
 #include "radcl/ambient/cache.h"
 #include "radcl/ambient/leaks.h"
 #include "radcl/ambient/record_maker.h"
@@ -43,6 +48,7 @@
 #include "radcl/render/pipeline/tally_tree.h"
 #include "scratch_pool.h"
 #include "shade_slice.h"
+#include "shadow_tracer.h"
 #include "slice_transfer.h"
 
 namespace radcl::render {
@@ -60,7 +66,7 @@ struct Renderer::Impl {
       settings.tuning.profile}; // before the program: its lifetime includes building it
   device::Program program;
   device::Kernel shade, accumulate, shadow_step, pack, shadow_view, shadow_view_counted, offsets;
-  device::Buffer surfaces, materials, args, sources, verts, mirrors, params, patterns;
+  device::Buffer surfaces, materials, args, sources, verts, mirror_surfaces, params, patterns;
   device::GrowingBuffer amb_records, amb_nodes, amb_blocked;
   Vec3d centre;
   RenderStats stats;
@@ -93,10 +99,9 @@ struct Renderer::Impl {
   ScratchPool scratch{ctx};
   std::vector<RayQueue> spare_rays;
   std::vector<HitQueue> spare_hits;
-  // The current generation's rays on the device (GPU); gen_queue is its host copy, whose rows
-  // shade_slice names by address.
-  GenerationMirror mirror{ctx, settings.tuning.generation_mirror};
-  std::span<const rc_ray> gen_queue;
+  // The current generation's rays on the device (GPU); batch.generation is its host copy, whose
+  // rows shade_slice names by address.
+  GenerationCopy gen_copy{ctx, settings.tuning.keep_generations_on_device};
   // Rays of a generation traced and shaded together (tuning.chunk_rays sets it, for tests and
   // tuning): large enough that launches and transfers are a small part of a chunk's time,
   // small enough that its scratch stays in the caches and in reused pages. On a device that
@@ -125,8 +130,7 @@ struct Renderer::Impl {
                        RayQueue& queue, std::size_t first_index);
   std::vector<rc_hit> meter_hits(std::span<const PrimaryRay> prim, RayQueue& queue) const;
   void trace_generations(RayQueue& queue, RayQueue& next, HitQueue& hits,
-                         const std::vector<rc_hit>& meters, std::span<PrimaryResult> res,
-                         std::vector<Vec3d>& sums);
+                         const std::vector<rc_hit>& meters, std::span<PrimaryResult> res);
   // A wave's children join the next wave; while the cache is built, its record requests (they
   // are not rays) go to `misses` instead, in the same order.
   void append_children(const std::vector<rc_ray>& children, RayQueue& next);
@@ -137,16 +141,21 @@ struct Renderer::Impl {
   // super-samples the tally tree asked for.
   void supersample(const std::vector<TallyTree::SuperRequest>& req, RayQueue& next);
 
-  // The current batch. A primary's result slot: ids are input indices unless the caller gave
-  // its own (then they are looked up).
-  std::size_t batch_first = 0;
-  IdSlots id_slot;
-  std::vector<Vec3d>* mirrored = nullptr; // the batch's mirrored sums, per primary
-  std::span<PrimaryResult> results;       // the batch's results
-  std::vector<std::uint32_t> root_depth;  // reflection depth of the batch's first rays
-  std::size_t slot(std::uint32_t primary) const {
-    return id_slot.empty() ? primary - batch_first : id_slot.at(primary);
-  }
+  // The current batch (render_batch sets it up): where each primary's result goes, its sums
+  // and the generation being traced.
+  struct Batch {
+    std::size_t first = 0; // its first primary's index in the caller's rays
+    IdSlots ids;           // the caller's own ids, looked up (empty: ids are indices)
+    std::vector<Vec3d> sums, mirrored_sums; // per primary
+    std::span<PrimaryResult> results;       // the caller's
+    std::vector<std::uint32_t> root_depth;  // reflection depth of its first rays
+    std::span<const rc_ray> generation;     // the host's queue being traced
+    // A primary's result slot.
+    std::size_t slot(std::uint32_t primary) const {
+      return ids.empty() ? primary - first : ids.at(primary);
+    }
+  } batch;
+  std::size_t slot(std::uint32_t primary) const { return batch.slot(primary); }
   // -as: hemisphere samples tally per division until the super-samples are decided (and -tr
   // keeps the ray trees there).
   bool tree = false;
@@ -228,15 +237,14 @@ struct Renderer::Impl {
   // shadows, adds each ray's total into its primary's sum, appends the children to `next`.
   // One pass writes every ray's records into fixed slots; rays that did not fit are shaded
   // again into exactly sized room. The records are packed in ray order either way.
-  void shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n, std::vector<Vec3d>& sums,
-                   RayQueue& next);
+  void shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n, RayQueue& next);
   // Its stages (shade_slice.cpp): rc_shade into the slots and the counts read; the records
   // placed and rays that did not fit shaded again; the shadow rays traced and summed; the
   // totals added to the sums or the tally.
   void launch_slice(ShadeSlice& s);
   void place_slice(ShadeSlice& s, RayQueue& next);
-  void finish_slice(ShadeSlice& s, std::vector<Vec3d>& sums, RayQueue& next);
-  void add_slice(const ShadeSlice& s, std::vector<Vec3d>& sums);
+  void finish_slice(ShadeSlice& s, RayQueue& next);
+  void add_slice(const ShadeSlice& s);
   // How a slice's data crosses between host and device (slice_transfer.h), chosen once.
   const std::unique_ptr<SliceTransfer> transfer = make_slice_transfer(ctx);
   // Shades the rays `over` (slice indices) again, their records written into exact room, and
@@ -281,58 +289,9 @@ struct Renderer::Impl {
   // Whether the pending tally reads hits in `h`'s room.
   bool tally_reads(const HitQueue& h) const;
 
-  // ---- Shadow rays (intersect_shadow.cpp) ----
-  // Shadow rays in steps: Embree finds each one's next hit, the kernel decides whether it
-  // reached its source, is blocked, or continues through a transmitting surface with its
-  // contribution reduced (then it is traced again from there). Each ray keeps its slot, so the
-  // result does not depend on the order of work. Survivors' final contributions are written
-  // back into `shadows`; `blocked` marks the blocked ones.
-  // In chunks, so the host's per-ray scratch (Embree answers above all) stays in memory that is
-  // reused rather than freshly mapped and cleared.
-  // The packed requests [0, n) of `shadows` stay on the device: the host traces them from a view
-  // of their origins and directions (rc_shadow_view), the steps update them in place; blocked[k]
-  // says whether request k was blocked (estimates stay 1).
-  // `view`: the requests' views when the caller had them made (view_shadows_later, read in
-  // the same wait as its own transfers); null: made here.
+  // ---- Shadow rays (shadow_tracer.h) ----
   using ShadowView = render::ShadowView;
-  // The device's kBlocked buffer holds the same flags as `blocked` once it returns.
-  // `after_step`: commands enqueued after each step of the last chunk, in that step's wait;
-  // true when they ran after the last step (so their results stand).
-  bool trace_shadows(device::Buffer& shadows, std::size_t n, std::vector<std::uint8_t>& blocked,
-                     const ShadowView* view = nullptr,
-                     const std::function<void()>& after_step = {});
-  // rc_shadow_view over requests [0, n) of `shadows`, enqueued; the views are there once the
-  // context finishes.
-  const ShadowView* view_shadows_later(device::Buffer& shadows, std::size_t n);
-  // Requests [first, first + n): blocked[first + i] cleared for each one that reached its
-  // source.
-  bool trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view, std::size_t first,
-                          std::size_t n, std::uint8_t* blocked,
-                          const std::function<void()>& after_step);
-  // Its steps: the requests that are rays into shadow_cur (their slots in shadow_slot); their
-  // hits from Embree, each decided on the host where it can be (shadow_decided); the undecided
-  // ones packed in order (their count returned; blocked flags of those that reached written);
-  // rc_shadow_step over them, whose states come back in shadow_state (and the next views, where
-  // they came along: else null).
-  void gather_shadow_rays(const ShadowView* view, std::size_t first, std::size_t n);
-  void trace_shadow_hits(std::size_t m, bool decide);
-  std::size_t keep_undecided(std::size_t m, std::size_t first, std::size_t n,
-                             std::uint8_t* blocked);
-  const ShadowView* step_shadows(device::Buffer& shadows, std::size_t m,
-                                 const std::function<void()>& after_step,
-                                 PhaseProfile::StepClock& clock);
-  // A step's rays, their answers, states and slots, kept from step to step.
-  std::vector<ShadowView> shadow_cur;
-  HitQueue shadow_hits{PinnedAlloc<rc_hit>(&ctx)}; // pinned: they cross without a copy
-  static constexpr std::size_t kShadowChunk = std::size_t{1} << 18; // requests traced at once
-  std::vector<char> peek_view, peek_view_step;
-  std::vector<std::uint32_t> shadow_state, shadow_slot;
-  // Surfaces a shadow ray that meets them is blocked by, whatever it carries (rc_shadow_at's
-  // last case: plastic, metal and their kin, no antimatter clipping them): decided on the
-  // host, without a step. Empty while a source is virtual (its rays must meet the mirror).
-  std::vector<std::uint8_t> shadow_blockers, shadow_decided;
-  bool shadow_misses_reach = false;
-  void note_shadow_blockers(const CompiledSources& so);
+  ShadowTracer shadow_tracer{*this};
 
   // ---- The irradiance cache's passes (cache_passes.cpp; docs/cache-internals.md) ----
   // How a primary starts when it is a hemisphere sample of a record being made.
@@ -359,25 +318,10 @@ struct Renderer::Impl {
   std::uint32_t next_sample_id = 0x40000000u;
   std::unique_ptr<ambient::RecordMaker> maker; // the record kernel, built when first needed
 
-  // The cache as uploaded, the same over its corral-marked records only (the leak tests walk
-  // that on the host) and the leak tester.
-  ambient::AmbientCacheBuffers cache, marked;
+  // The records as the lookups and the leak tests read them (cache_forest.h), and the leak
+  // tester over the marked ones.
+  CacheForest forest;
   ambient::LeakTester leak_tester;
-  // The lookup forest (and the leak test's forest of marked records): trees over consecutive
-  // ranges of cache_local, each at most half the size of the one before (or small), laid one
-  // after another in `cache` and `marked`; records joining rebuild only the last tree, so a
-  // build that uploads thousands of times costs O(n log n), and the device keeps the rest.
-  struct CacheTree {
-    std::size_t from = 0, to = 0;         // cache_local range
-    std::size_t nodes = 0, records = 0;   // where it begins in `cache`
-    std::size_t mnodes = 0, mrecords = 0; // where its marked records' tree begins in `marked`
-    std::size_t msrc = 0;                 // where its marked inputs begin in marked_src
-  };
-  static constexpr std::size_t kSmallCacheTree = 256; // a tree this small absorbs the next
-  std::vector<CacheTree> cache_trees;
-  std::vector<std::uint32_t> marked_src; // cache_local index of each marked tree input
-  std::vector<std::uint32_t> leaf_of;    // cache_local index -> leaf in `cache`
-  std::vector<std::uint32_t> to_full;    // leaf in `marked` -> leaf in `cache`
   // The lowest level of any record (INT_MAX: none), counted up to level_seen: a lookup at
   // ambient depth d accepts records of level d or lower only.
   int min_level = std::numeric_limits<int>::max();

@@ -15,7 +15,7 @@ namespace radcl::render {
 using namespace pipeline;
 
 void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::size_t n,
-                                 std::vector<Vec3d>& sums, RayQueue& next) {
+                                 RayQueue& next) {
   Timed timed(prof, Phase::Shade);
   SliceSteps steps(prof, ctx);
   ShadeSlice s;
@@ -34,7 +34,7 @@ void Renderer::Impl::shade_slice(const rc_ray* rays, const rc_hit* hit, std::siz
     return;
   }
   timed.stop();
-  finish_slice(s, sums, next);
+  finish_slice(s, next);
 }
 
 void Renderer::Impl::launch_slice(ShadeSlice& s) {
@@ -55,7 +55,7 @@ void Renderer::Impl::launch_slice(ShadeSlice& s) {
   // changed some since (its hemispheres' samples). The kernel takes the host's, so the children
   // come with the right ones and the tally need not write every child's.
   s.tally_slice = tree && !throwaway && settings.trace == RenderSettings::Trace::Off;
-  if (s.from_mirror && s.tally_slice) {
+  if (s.from_device_copy && s.tally_slice) {
     shade_scratch.tallies.resize(n);
     for_rows(n, [&](std::size_t i) { shade_scratch.tallies[i] = s.rays[i].tally; });
     l.tallies = &scratch(kTallies, shade_scratch.tallies);
@@ -106,16 +106,16 @@ void Renderer::Impl::place_slice(ShadeSlice& s, RayQueue& next) {
   if (reshaded) {
     reshade(s.rays, s.hit, x.over, x.nsp, shadow_off, spawn_off, *s.shadows, s.children,
             s.children_on_device, s.first_child);
-    if (!s.children_on_device) mirror.upload(s.children, s.first_child, s.total_children);
+    if (!s.children_on_device) gen_copy.upload(s.children, s.first_child, s.total_children);
   }
-  if (s.from_mirror && tree && !s.tally_slice)
+  if (s.from_device_copy && tree && !s.tally_slice)
     for_rows(s.n, [&](std::size_t i) {
       for (std::uint32_t k = 0; k < x.nsp[i]; ++k)
         s.children[spawn_off[i] + k].tally = s.rays[i].tally;
     });
 }
 
-void Renderer::Impl::finish_slice(ShadeSlice& s, std::vector<Vec3d>& sums, RayQueue& next) {
+void Renderer::Impl::finish_slice(ShadeSlice& s, RayQueue& next) {
   ShadeScratch& x = shade_scratch;
   const std::size_t n = s.n;
   const std::uint32_t nshadow = s.total_shadows;
@@ -143,8 +143,8 @@ void Renderer::Impl::finish_slice(ShadeSlice& s, std::vector<Vec3d>& sums, RayQu
   // small for a slice this size).
   const bool along = transfer->sums_along(*this, n) && !traced_shadows;
   const bool summed =
-      trace_shadows(*s.shadows, nshadow, x.blocked, s.view,
-                    along ? std::function<void()>(sum_up) : std::function<void()>{});
+      shadow_tracer.trace(*s.shadows, nshadow, x.blocked, s.view,
+                          along ? std::function<void()>(sum_up) : std::function<void()>{});
   Timed timed(prof, Phase::Accumulate);
   PhaseProfile::StepClock clock(prof);
   x.shadows.resize(traced_shadows ? nshadow : 0);
@@ -153,12 +153,12 @@ void Renderer::Impl::finish_slice(ShadeSlice& s, std::vector<Vec3d>& sums, RayQu
   if (!summed) sum_up();
   if (!summed || !x.shadows.empty()) ctx.finish();
   clock.mark(PhaseProfile::StepSumsWait);
-  add_slice(s, sums);
+  add_slice(s);
   set_misses_aside(next, s.first_child);
   clock.mark(PhaseProfile::StepSumsTally);
 }
 
-void Renderer::Impl::add_slice(const ShadeSlice& s, std::vector<Vec3d>& sums) {
+void Renderer::Impl::add_slice(const ShadeSlice& s) {
   const ShadeScratch& x = shade_scratch;
   const std::size_t n = s.n;
   if (s.tally_slice) {
@@ -182,13 +182,13 @@ void Renderer::Impl::add_slice(const ShadeSlice& s, std::vector<Vec3d>& sums) {
     return;
   }
   for (std::size_t i = 0; i < n; ++i) {
-    Vec3d& sum = sums[s.rays[i].tally];
+    Vec3d& sum = batch.sums[s.rays[i].tally];
     const rc_float4& t = x.total[i];
     sum[0] += t.x;
     sum[1] += t.y;
     sum[2] += t.z;
     if (s.rays[i].flags & RC_RAY_MIRRORED) {
-      Vec3d& m = (*mirrored)[slot(s.rays[i].primary)];
+      Vec3d& m = batch.mirrored_sums[slot(s.rays[i].primary)];
       m[0] += t.x;
       m[1] += t.y;
       m[2] += t.z;

@@ -48,7 +48,7 @@ struct ShadeSlice {
   // of their generation.
   device::Buffer ray_view, hit_view; // the host's queues in place, where the device shares them
   device::Buffer *rays_in = nullptr, *hits_in = nullptr;
-  bool from_mirror = false;
+  bool from_device_copy = false;
   bool tally_slice = false; // the -as tally takes this slice's totals
   // rc_shade's outputs (stage 2): the slots, immediate values, counts and hemisphere marks.
   device::Buffer *slot_shadows = nullptr, *slot_children = nullptr, *immediate = nullptr;

@@ -19,7 +19,7 @@ void Renderer::Impl::set_scene_args(device::Kernel& k, unsigned first) {
       .arg(first + 2, args)
       .arg(first + 3, sources)
       .arg(first + 4, verts)
-      .arg(first + 5, mirrors)
+      .arg(first + 5, mirror_surfaces)
       .arg(first + 6, params)
       .arg(first + 7, patterns)
       .arg(first + 8, amb_records.buffer())

@@ -57,7 +57,7 @@ public:
                 s.n, false, *s.shadows, bsp);
     (*s.steps)(PhaseProfile::StepPack);
     if (im.fewer_waits && !reshaded && !im.throwaway && s.total_shadows) {
-      s.view = im.view_shadows_later(*s.shadows, s.total_shadows);
+      s.view = im.shadow_tracer.view_later(*s.shadows, s.total_shadows);
       im.ctx.finish();
     }
     std::vector<char>& later = x.later; // shaded again afterwards
@@ -80,11 +80,11 @@ public:
   // whose tally is set again).
   void send_inputs(Renderer::Impl& im, ShadeSlice& s) const override {
     device::Buffer& brays = im.scratch(kRays, s.n * sizeof(rc_ray));
-    const std::span<const rc_ray> gen = im.gen_queue;
-    s.from_mirror =
-        im.mirror.current() && s.rays >= gen.data() && s.rays + s.n <= gen.data() + gen.size() &&
-        im.mirror.copy_current(brays, static_cast<std::size_t>(s.rays - gen.data()), s.n);
-    if (!s.from_mirror) write_rows(brays, s.rays, s.n * sizeof(rc_ray));
+    const std::span<const rc_ray> gen = im.batch.generation;
+    s.from_device_copy =
+        im.gen_copy.current() && s.rays >= gen.data() && s.rays + s.n <= gen.data() + gen.size() &&
+        im.gen_copy.copy_current(brays, static_cast<std::size_t>(s.rays - gen.data()), s.n);
+    if (!s.from_device_copy) write_rows(brays, s.rays, s.n * sizeof(rc_ray));
     s.rays_in = &brays;
     s.hits_in = &im.scratch(kHits, s.n * sizeof(rc_hit));
     write_rows(*s.hits_in, s.hit, s.n * sizeof(rc_hit));
@@ -114,7 +114,7 @@ public:
         im.shadow_view_counted.arg(0, bsh).arg(1, btot).arg(2, im.sources).arg(3, bview);
         im.ctx.run(im.shadow_view_counted, n * csh);
         s.fused_view = static_cast<const ShadowView*>(
-            bview.peek_later(n * csh * sizeof(ShadowView), im.peek_view));
+            bview.peek_later(n * csh * sizeof(ShadowView), im.shadow_tracer.view_staging()));
       }
       im.shade_scratch.fused_children.resize(n * csp);
       bsp.read_later(im.shade_scratch.fused_children.data(), n * csp * sizeof(rc_ray));
@@ -130,7 +130,7 @@ public:
     if (s.fused && !reshaded) { // packed already: the device's offsets are the host's
       shadow_room(im, s, true);
       std::copy_n(x.fused_children.data(), nspawn, s.children);
-      im.mirror.append(*s.fused_children, s.first_child, nspawn);
+      im.gen_copy.append(*s.fused_children, s.first_child, nspawn);
       if (s.total_shadows) s.view = s.fused_view;
       return;
     }
@@ -144,20 +144,21 @@ public:
     // The shadow rays' views come back in the same wait as the children, unless requests
     // shaded again still have to be written into their places.
     if (im.fewer_waits && !reshaded && !im.throwaway && s.total_shadows)
-      s.view = im.view_shadows_later(*s.shadows, s.total_shadows);
+      s.view = im.shadow_tracer.view_later(*s.shadows, s.total_shadows);
     // Rays shaded again write their children straight into the device's copy of the next
     // generation, read from there whole.
-    s.children_on_device = reshaded ? im.mirror.next_rows(s.first_child, nspawn) : nullptr;
+    s.children_on_device = reshaded ? im.gen_copy.next_rows(s.first_child, nspawn) : nullptr;
     // The children cross while the host traces the shadow rays: only what comes before them
     // (the shadow views) is waited for here, where the host reads no child before the sums'
     // wait (no ray shaded again, no tally written into them, no record request).
     const bool children_later = im.children_later_on && !s.children_on_device && !im.throwaway &&
-                                !im.collecting && !(s.from_mirror && im.tree && !s.tally_slice);
+                                !im.collecting &&
+                                !(s.from_device_copy && im.tree && !s.tally_slice);
     device::Context::Mark before_children;
     if (children_later) before_children = im.ctx.mark();
     if (nspawn && !s.children_on_device)
       bsp.read_later(s.children, std::size_t{nspawn} * sizeof(rc_ray));
-    im.mirror.append(bsp, s.first_child, nspawn);
+    im.gen_copy.append(bsp, s.first_child, nspawn);
     if (children_later)
       im.ctx.wait_for(before_children);
     else

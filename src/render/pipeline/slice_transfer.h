@@ -3,7 +3,7 @@
 //   Shared memory (PoCL on the host's cores): rc_shade reads the host's queues in place, and the
 //   host reads the kernel's slots in place and packs the children itself.
 //   Discrete memory (a GPU): a generation's rays stay on the device for the next
-//   (GenerationMirror); the records are packed there (rc_pack; a small slice's in the counts'
+//   (GenerationCopy); the records are packed there (rc_pack; a small slice's in the counts'
 //   own wait, through rc_offsets); the children cross back while the host traces the shadow
 //   rays; and the sums ride along with the shadow steps.
 #pragma once

@@ -102,11 +102,10 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   queue.assign(prim.size(), rc_ray{}); // fields a primary does not set stay 0
   leak_lists.assign(1, 0u);
   leak_uploaded = 0;
-  std::vector<Vec3d> sums(prim.size(), Vec3d{0, 0, 0});
-  std::vector<Vec3d> mirror_sums(prim.size(), Vec3d{0, 0, 0});
-  mirrored = &mirror_sums;
-  results = res;
-  root_depth.assign(prim.size(), 0);
+  batch.sums.assign(prim.size(), Vec3d{0, 0, 0});
+  batch.mirrored_sums.assign(prim.size(), Vec3d{0, 0, 0});
+  batch.results = res;
+  batch.root_depth.assign(prim.size(), 0);
   if (tree) {
     tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
     tally.set_profile(&prof);
@@ -114,11 +113,11 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   start_primaries(prim, res, queue, first_index);
   const std::vector<rc_hit> meters = meter_hits(prim, queue);
   timed.stop();
-  trace_generations(queue, next_hold.v, hits, meters, res, sums);
+  trace_generations(queue, next_hold.v, hits, meters, res);
   timed.start(Phase::Batch);
   const auto finish = [&](std::size_t i) {
-    res[i].value = tree ? tally.sum(i) : sums[i];
-    res[i].mirrored = tree ? tally.mirrored(i) : mirror_sums[i];
+    res[i].value = tree ? tally.sum(i) : batch.sums[i];
+    res[i].mirrored = tree ? tally.mirrored(i) : batch.mirrored_sums[i];
   };
   if (settings.trace != RenderSettings::Trace::Off) {
     for (std::size_t i = 0; i < prim.size(); ++i) {
@@ -131,13 +130,13 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
 }
 
 void Renderer::Impl::assign_slots(std::span<const PrimaryRay> prim, std::size_t first_index) {
-  batch_first = first_index;
-  id_slot.clear();
+  batch.first = first_index;
+  batch.ids.clear();
   if (std::any_of(prim.begin(), prim.end(), [](const PrimaryRay& r) { return r.id != RC_NONE; })) {
     std::vector<std::uint32_t> ids(prim.size());
     for (std::size_t k = 0; k < prim.size(); ++k)
       ids[k] = prim[k].id != RC_NONE ? prim[k].id : static_cast<std::uint32_t>(first_index + k);
-    id_slot.assign(ids);
+    batch.ids.assign(ids);
   }
 }
 
@@ -179,7 +178,7 @@ void Renderer::Impl::start_primaries(std::span<const PrimaryRay> prim, std::span
       r.dist0 = st.dist0;
       r.org.w = RC_TMIN_OFF; // its origin is already beside the surface
     }
-    root_depth[i] = r.depth;
+    batch.root_depth[i] = r.depth;
   });
 }
 
@@ -209,7 +208,7 @@ std::vector<rc_hit> Renderer::Impl::meter_hits(std::span<const PrimaryRay> prim,
 
 void Renderer::Impl::trace_generations(RayQueue& queue, RayQueue& next, HitQueue& hits,
                                        const std::vector<rc_hit>& meters,
-                                       std::span<PrimaryResult> res, std::vector<Vec3d>& sums) {
+                                       std::span<PrimaryResult> res) {
   // Each generation of rays goes through in chunks: trace, leak tests and shading of one
   // chunk before the next, so the per-ray scratch (Embree's answers, slots, shadow requests)
   // is bounded by the chunk and reused, not freshly mapped and cleared for a generation of
@@ -245,10 +244,10 @@ void Renderer::Impl::trace_generations(RayQueue& queue, RayQueue& next, HitQueue
   // A chunk's room at once: pinned memory is costly to take and give back.
   for (HitQueue* h : {&hits, &ahead, &behind})
     if (h->capacity() < chunk) h->reserve(chunk);
-  mirror.start_batch();
+  gen_copy.start_batch();
   while (!queue.empty()) {
     const std::size_t n = queue.size();
-    gen_queue = std::span<const rc_ray>(queue.data(), n);
+    batch.generation = std::span<const rc_ray>(queue.data(), n);
     peak_generation = std::max(peak_generation, n);
     const auto part_at = [&](std::size_t a) {
       return std::span<const rc_ray>(queue.data() + a, std::min(n, a + chunk) - a);
@@ -280,7 +279,7 @@ void Renderer::Impl::trace_generations(RayQueue& queue, RayQueue& next, HitQueue
         // (a sub-buffer's start is aligned).
         std::size_t sb =
             std::min(part.size(), sa + std::max<std::size_t>(256, limit / per_ray / 256 * 256));
-        shade_slice(part.data() + sa, hits.data() + sa, sb - sa, sums, next);
+        shade_slice(part.data() + sa, hits.data() + sa, sb - sa, next);
         sa = sb;
       }
       ahead_arena.execute([&] { tracing.wait(); });
@@ -295,9 +294,9 @@ void Renderer::Impl::trace_generations(RayQueue& queue, RayQueue& next, HitQueue
         supersample(req, next);
     std::swap(queue, next);
     next.clear();
-    mirror.advance();
+    gen_copy.advance();
   }
-  gen_queue = {};
+  batch.generation = {};
 }
 
 void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req, RayQueue& next) {
@@ -339,7 +338,7 @@ void Renderer::Impl::supersample(const std::vector<TallyTree::SuperRequest>& req
     tally.supersampled(req[i], children.data() + spawn_off[i], counts[i]);
   const std::size_t at = next.size();
   append_children(children, next);
-  mirror.upload(next.data() + at, at, next.size() - at);
+  gen_copy.upload(next.data() + at, at, next.size() - at);
 }
 
 void Renderer::Impl::append_children(const std::vector<rc_ray>& children, RayQueue& next) {
@@ -364,7 +363,7 @@ void Renderer::Impl::set_misses_aside(RayQueue& next, std::size_t first) {
       next[k++] = next[i];
   }
   // The device's copy of these rows was made before they closed up.
-  if (k != next.size()) mirror.upload(next.data() + first, first, k - first);
+  if (k != next.size()) gen_copy.upload(next.data() + first, first, k - first);
   next.resize(k);
 }
 

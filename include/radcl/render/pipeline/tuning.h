@@ -2,7 +2,7 @@
 // waits that give the same bits whichever way they are set (tests/render/pipeline/
 // determinism.cpp, tests/cli/stability_determinism.cpp), and the switches that measure a part
 // by turning it off. The programs fill it once from RADCL_* variables (src/cli/
-// pipeline_tuning.cpp, listed in docs/performance.md); tests set its fields.
+// pipeline_tuning.cpp; the variables are listed in docs/devices.md); tests set its fields.
 #pragma once
 
 #include <cstddef>
@@ -33,7 +33,7 @@ struct PipelineTuning {
   // The -as tally fed beside the shading (RADCL_TALLY_BESIDE=1 or 0); -1: the device decides.
   int tally_beside = -1;
   // On a GPU each generation kept on the device for the next (RADCL_MIRROR=0: uploaded).
-  bool generation_mirror = true;
+  bool keep_generations_on_device = true;
   // Shadow rays that meet a blocker decided on the host (RADCL_SHADOW_ON_HOST=0: every ray
   // stepped on the device, the tests' reference).
   bool shadow_blockers_on_host = true;

@@ -1,4 +1,4 @@
-#include "generation_mirror.h"
+#include "generation_copy.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -7,7 +7,7 @@
 #include "radcl/util/error.h"
 
 namespace radcl::render {
-GenerationMirror::GenerationMirror(device::Context& ctx, bool wanted) : ctx_(ctx) {
+GenerationCopy::GenerationCopy(device::Context& ctx, bool wanted) : ctx_(ctx) {
   on_ = wanted && !ctx.zero_copy(); // off: every generation uploaded from the host
   // A generation past this many bytes stays on the host: each of the two copies takes at most
   // the device's largest allocation, a tenth of its memory and 3 GB (a GPU allocates lazily, so
@@ -20,18 +20,18 @@ GenerationMirror::GenerationMirror(device::Context& ctx, bool wanted) : ctx_(ctx
   max_bytes_ = static_cast<std::size_t>(cap);
 }
 
-void GenerationMirror::start_batch() {
+void GenerationCopy::start_batch() {
   cur_ok_ = false;
   next_ok_ = on_;
 }
 
-bool GenerationMirror::copy_current(device::Buffer& dst, std::size_t first, std::size_t n) {
+bool GenerationCopy::copy_current(device::Buffer& dst, std::size_t first, std::size_t n) {
   if (!cur_ok_) return false;
   dst.copy_from(buf_[cur_], n * sizeof(rc_ray), first * sizeof(rc_ray), 0);
   return true;
 }
 
-bool GenerationMirror::room(std::size_t rays, std::size_t keep) {
+bool GenerationCopy::room(std::size_t rays, std::size_t keep) {
   device::Buffer& b = buf_[1 - cur_];
   const std::size_t bytes = rays * sizeof(rc_ray);
   if (b.size() >= bytes) return true;
@@ -48,22 +48,22 @@ bool GenerationMirror::room(std::size_t rays, std::size_t keep) {
   return true;
 }
 
-void GenerationMirror::append(const device::Buffer& src, std::size_t at, std::size_t n) {
+void GenerationCopy::append(const device::Buffer& src, std::size_t at, std::size_t n) {
   if (device::Buffer* b = n ? next_rows(at, n) : nullptr)
     b->copy_from(src, n * sizeof(rc_ray), 0, at * sizeof(rc_ray));
 }
 
-void GenerationMirror::upload(const rc_ray* rows, std::size_t at, std::size_t n) {
+void GenerationCopy::upload(const rc_ray* rows, std::size_t at, std::size_t n) {
   if (device::Buffer* b = n ? next_rows(at, n) : nullptr)
     b->write(rows, n * sizeof(rc_ray), at * sizeof(rc_ray));
 }
 
-device::Buffer* GenerationMirror::next_rows(std::size_t at, std::size_t n) {
+device::Buffer* GenerationCopy::next_rows(std::size_t at, std::size_t n) {
   if (next_ok_ && !room(at + n, at)) next_ok_ = false;
   return next_ok_ ? &buf_[1 - cur_] : nullptr;
 }
 
-void GenerationMirror::advance() {
+void GenerationCopy::advance() {
   cur_ = 1 - cur_;
   cur_ok_ = next_ok_;
   next_ok_ = on_;

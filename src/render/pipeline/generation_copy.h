@@ -3,7 +3,7 @@
 // memory instead of crossing the bus again (112 bytes a ray, the largest of the shading's
 // uploads). The host keeps its own queue for Embree and the tally tree; rows it writes or
 // changes after the device made them are uploaded again. Where the device shares the host's
-// memory (PoCL) there is nothing to save and the mirror is off.
+// memory (PoCL) there is nothing to save and the copy is off.
 #pragma once
 
 #include <cstddef>
@@ -14,10 +14,10 @@
 
 namespace radcl::render {
 
-class GenerationMirror {
+class GenerationCopy {
 public:
   // `wanted` off: every generation is uploaded from the host.
-  GenerationMirror(device::Context& ctx, bool wanted);
+  GenerationCopy(device::Context& ctx, bool wanted);
   // A batch begins: its first generation comes from the host.
   void start_batch();
   // Whether the current generation's rays are all on the device.

@@ -1,5 +1,5 @@
 // Stage: shadow rays, stepped through Embree and rc_shadow_step until each reaches its source
-// or is blocked.
+// or is blocked (shadow_tracer.h).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,93 +11,96 @@
 #include "pipeline_util.h"
 #include "radcl/render/compile/material_traits.h"
 #include "renderer_impl.h"
+#include "shadow_tracer.h"
 
 namespace radcl::render {
 
 using namespace ambient;
 using namespace pipeline;
 
-void Renderer::Impl::note_shadow_blockers(const CompiledSources& so) {
-  shadow_blockers.clear();
-  shadow_misses_reach = false;
-  if (!settings.tuning.shadow_blockers_on_host)
+ShadowTracer::ShadowTracer(Renderer::Impl& im) : im_(im), hits_(PinnedAlloc<rc_hit>(&im.ctx)) {}
+
+void ShadowTracer::note_blockers(const CompiledSources& so) {
+  blockers_.clear();
+  misses_reach_ = false;
+  if (!im_.settings.tuning.shadow_blockers_on_host)
     return; // every ray stepped on the device (the tests' reference)
   for (const rc_source& src : so.sources)
     if (src.flags & RC_SRCF_VIRTUAL) return;
   // A miss reaches a distant source unchanged where no ray travels in a medium (nothing to
   // lose on the way) and none is bent (by a dielectric) away from where it was aimed.
-  const device::FeatureSet& f = cs.features;
-  shadow_misses_reach = !has_medium(settings) && !f.has(RC_OBJ_MIST) && !f.has(RC_OBJ_DIELECTRIC) &&
-                        !f.has(RC_OBJ_INTERFACE) &&
-                        std::all_of(so.sources.begin(), so.sources.end(), [](const rc_source& src) {
-                          return src.kind == RC_SRC_DISTANT;
-                        });
+  const device::FeatureSet& f = im_.cs.features;
+  misses_reach_ = !has_medium(im_.settings) && !f.has(RC_OBJ_MIST) && !f.has(RC_OBJ_DIELECTRIC) &&
+                  !f.has(RC_OBJ_INTERFACE) &&
+                  std::all_of(so.sources.begin(), so.sources.end(),
+                              [](const rc_source& src) { return src.kind == RC_SRC_DISTANT; });
   // Only materials rc_shadow_at passes to its last case; emitters are left to the step (one
   // may be the source aimed at) and so is every other kind.
-  shadow_blockers.resize(cs.surfaces.size());
-  for (std::size_t i = 0; i < cs.surfaces.size(); ++i) {
-    const rc_surface& f = cs.surfaces[i];
-    shadow_blockers[i] =
-        f.material != RC_NONE && f.clip == 0 && f.source == RC_NONE &&
-        material_traits(static_cast<rc_object_type>(cs.materials[f.material].type)).blocks_shadows;
+  blockers_.resize(im_.cs.surfaces.size());
+  for (std::size_t i = 0; i < im_.cs.surfaces.size(); ++i) {
+    const rc_surface& f = im_.cs.surfaces[i];
+    blockers_[i] = f.material != RC_NONE && f.clip == 0 && f.source == RC_NONE &&
+                   material_traits(static_cast<rc_object_type>(im_.cs.materials[f.material].type))
+                       .blocks_shadows;
   }
 }
 
-const Renderer::Impl::ShadowView* Renderer::Impl::view_shadows_later(device::Buffer& shadows,
-                                                                     std::size_t n) {
+const ShadowView* ShadowTracer::view_later(device::Buffer& shadows, std::size_t n) {
   // What Embree needs of each request, made on the device: 32 bytes cross, not the record.
-  device::Buffer& bview = scratch(kShadowView, n * sizeof(ShadowView));
-  shadow_view.arg(0, shadows).arg(1, static_cast<std::uint32_t>(n)).arg(2, sources).arg(3, bview);
-  ctx.run(shadow_view, n);
-  return static_cast<const ShadowView*>(bview.peek_later(n * sizeof(ShadowView), peek_view));
+  device::Buffer& bview = im_.scratch(kShadowView, n * sizeof(ShadowView));
+  im_.shadow_view.arg(0, shadows)
+      .arg(1, static_cast<std::uint32_t>(n))
+      .arg(2, im_.sources)
+      .arg(3, bview);
+  im_.ctx.run(im_.shadow_view, n);
+  return static_cast<const ShadowView*>(bview.peek_later(n * sizeof(ShadowView), view_staging_));
 }
 
-bool Renderer::Impl::trace_shadows(device::Buffer& shadows, std::size_t n,
-                                   std::vector<std::uint8_t>& blocked, const ShadowView* view,
-                                   const std::function<void()>& after_step) {
+bool ShadowTracer::trace(device::Buffer& shadows, std::size_t n, std::vector<std::uint8_t>& blocked,
+                         const ShadowView* view, const std::function<void()>& after_step) {
   blocked.assign(n, 1);
   if (n == 0) return false;
-  scratch(kBlocked, blocked); // the steps clear the reached ones' flags on the device too
+  im_.scratch(kBlocked, blocked); // the steps clear the reached ones' flags on the device too
   if (!view) {
-    view = view_shadows_later(shadows, n);
-    ctx.finish();
+    view = view_later(shadows, n);
+    im_.ctx.finish();
   }
   bool done = false;
-  for (std::size_t a = 0; a < n; a += kShadowChunk) {
-    const bool last = a + kShadowChunk >= n;
-    done = trace_shadow_chunk(shadows, view, a, std::min(kShadowChunk, n - a), blocked.data(),
-                              last ? after_step : std::function<void()>{});
+  for (std::size_t a = 0; a < n; a += kChunk) {
+    const bool last = a + kChunk >= n;
+    done = trace_chunk(shadows, view, a, std::min(kChunk, n - a), blocked.data(),
+                       last ? after_step : std::function<void()>{});
   }
   return done;
 }
 
-bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowView* view,
-                                        std::size_t first, std::size_t n, std::uint8_t* blocked,
-                                        const std::function<void()>& after_step) {
-  gather_shadow_rays(view, first, n);
-  std::vector<std::uint32_t>&slot = shadow_slot, &state = shadow_state;
-  std::vector<ShadowView>& cur = shadow_cur;
+bool ShadowTracer::trace_chunk(device::Buffer& shadows, const ShadowView* view, std::size_t first,
+                               std::size_t n, std::uint8_t* blocked,
+                               const std::function<void()>& after_step) {
+  gather(view, first, n);
+  std::vector<std::uint32_t>&slot = slot_, &state = state_;
+  std::vector<ShadowView>& cur = cur_;
   state.assign(cur.size(), 0);
   // Radiance traces shadow rays on until their weight vanishes; a glass stack that needs
   // more steps than this contributes nothing measurable.
   constexpr int kMaxSteps = 64;
   bool done = false; // after_step ran after the last step
-  for (int step = 0; step < kMaxSteps && !cur.empty(); ++step) {
+  for (int s = 0; s < kMaxSteps && !cur.empty(); ++s) {
     std::size_t m = cur.size();
-    Timed timed(prof, Phase::ShadowTrace);
-    // Rays whose hit blocks them outright stay blocked with no step (shadow_blockers); misses
-    // may reach their sources with none (shadow_misses_reach).
-    const bool decide = !shadow_blockers.empty();
-    trace_shadow_hits(m, decide);
-    stats.shadow += m;
+    PhaseProfile::Scope timed(im_.prof, Phase::ShadowTrace);
+    // Rays whose hit blocks them outright stay blocked with no step (blockers_); misses
+    // may reach their sources with none (misses_reach_).
+    const bool decide = !blockers_.empty();
+    trace_hits(m, decide);
+    im_.stats.shadow += m;
     if (decide) {
       m = keep_undecided(m, first, n, blocked);
       if (m == 0) break;
     }
-    stats.shadow_steps += m;
+    im_.stats.shadow_steps += m;
     timed.start(Phase::ShadowStep);
-    PhaseProfile::StepClock clock(prof);
-    const ShadowView* next = step_shadows(shadows, m, after_step, clock);
+    PhaseProfile::StepClock clock(im_.prof);
+    const ShadowView* next = step(shadows, m, after_step, clock);
     done = static_cast<bool>(after_step);
 
     std::size_t k = 0;
@@ -112,8 +115,8 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
     if (k == 0) break;
     // The few that go on (through glass): their new origins and directions.
     if (!next)
-      next = static_cast<const ShadowView*>(
-          scratch(kStepView, m * sizeof(ShadowView)).peek(m * sizeof(ShadowView), peek_view_step));
+      next = static_cast<const ShadowView*>(im_.scratch(kStepView, m * sizeof(ShadowView))
+                                                .peek(m * sizeof(ShadowView), step_staging_));
     k = 0;
     for (std::size_t i = 0; i < m; ++i)
       if ((state[i] & RC_SH_STATUS) == RC_SH_CONTINUE) {
@@ -130,9 +133,9 @@ bool Renderer::Impl::trace_shadow_chunk(device::Buffer& shadows, const ShadowVie
   return done;
 }
 
-void Renderer::Impl::gather_shadow_rays(const ShadowView* view, std::size_t first, std::size_t n) {
-  std::vector<std::uint32_t>& slot = shadow_slot;
-  std::vector<ShadowView>& cur = shadow_cur;
+void ShadowTracer::gather(const ShadowView* view, std::size_t first, std::size_t n) {
+  std::vector<std::uint32_t>& slot = slot_;
+  std::vector<ShadowView>& cur = cur_;
   slot.clear();
   cur.clear();
   // Estimates and empty slots of the -dt selection (reach < 0) are not rays. Where there are
@@ -154,14 +157,14 @@ void Renderer::Impl::gather_shadow_rays(const ShadowView* view, std::size_t firs
   }
 }
 
-void Renderer::Impl::trace_shadow_hits(std::size_t m, bool decide) {
+void ShadowTracer::trace_hits(std::size_t m, bool decide) {
   // One pass per ray: the query and its device record.
-  HitQueue& hits = shadow_hits;
-  if (hits.capacity() < kShadowChunk) hits.reserve(kShadowChunk); // pinned room is costly to take
+  HitQueue& hits = hits_;
+  if (hits.capacity() < kChunk) hits.reserve(kChunk); // pinned room is costly to take
   hits.resize(m);
-  std::vector<std::uint8_t>& decided = shadow_decided;
+  std::vector<std::uint8_t>& decided = decided_;
   if (decide) decided.resize(m);
-  const std::vector<ShadowView>& cur = shadow_cur;
+  const std::vector<ShadowView>& cur = cur_;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const auto& range) {
     constexpr std::size_t kBlock = 16; // to Embree in packets
     std::array<geometry::Ray, kBlock> ray;
@@ -170,36 +173,36 @@ void Renderer::Impl::trace_shadow_hits(std::size_t m, bool decide) {
       const std::size_t b = std::min(kBlock, range.end() - a);
       for (std::size_t k = 0; k < b; ++k) {
         const ShadowView& s = cur[a + k];
-        ray[k].org = {s.org.x + centre[0], s.org.y + centre[1], s.org.z + centre[2]};
+        ray[k].org = {s.org.x + im_.centre[0], s.org.y + im_.centre[1], s.org.z + im_.centre[2]};
         ray[k].dir = {s.dir.x, s.dir.y, s.dir.z};
         ray[k].tmin = s.org.w;
         ray[k].free_origin = s.org.w > 0; // from an -I meter's point (rc_leave_org)
         ray[k].tmax = std::isfinite(s.dir.w) ? s.dir.w * 1.001 + 1e-3 : 1e300;
       }
-      geom.intersect_block(ray.data(), b, h.data());
+      im_.geom.intersect_block(ray.data(), b, h.data());
       for (std::size_t k = 0; k < b; ++k) {
         if (decide) { // a decided ray's record is never read
           std::uint8_t& d = decided[a + k];
           if (h[k]) {
-            const std::uint32_t f = cs.surface_of(*h[k]);
-            d = f < shadow_blockers.size() ? shadow_blockers[f] : 0;
+            const std::uint32_t f = im_.cs.surface_of(*h[k]);
+            d = f < blockers_.size() ? blockers_[f] : 0;
           } else {
-            d = shadow_misses_reach ? 2 : 0;
+            d = misses_reach_ ? 2 : 0;
           }
           if (d) continue;
         }
-        to_device(ray[k], h[k], hits[a + k]);
+        im_.to_device(ray[k], h[k], hits[a + k]);
       }
     }
   });
 }
 
-std::size_t Renderer::Impl::keep_undecided(std::size_t m, std::size_t first, std::size_t n,
-                                           std::uint8_t* blocked) {
+std::size_t ShadowTracer::keep_undecided(std::size_t m, std::size_t first, std::size_t n,
+                                         std::uint8_t* blocked) {
   // The rest, packed in order.
-  HitQueue& hits = shadow_hits;
-  const std::vector<std::uint8_t>& decided = shadow_decided;
-  std::vector<std::uint32_t>&slot = shadow_slot, &state = shadow_state;
+  HitQueue& hits = hits_;
+  const std::vector<std::uint8_t>& decided = decided_;
+  std::vector<std::uint32_t>&slot = slot_, &state = state_;
   std::size_t k = 0;
   bool reached = false;
   for (std::size_t i = 0; i < m; ++i) {
@@ -220,44 +223,43 @@ std::size_t Renderer::Impl::keep_undecided(std::size_t m, std::size_t first, std
   slot.resize(m);
   state.resize(m);
   // In queue order before the step and the sums that read them.
-  if (reached) scratch(kBlocked, std::size_t{0}).write(blocked + first, n, first);
+  if (reached) im_.scratch(kBlocked, std::size_t{0}).write(blocked + first, n, first);
   return m;
 }
 
-const Renderer::Impl::ShadowView*
-Renderer::Impl::step_shadows(device::Buffer& shadows, std::size_t m,
-                             const std::function<void()>& after_step,
-                             PhaseProfile::StepClock& clock) {
-  HitQueue& hits = shadow_hits;
-  std::vector<std::uint32_t>&slot = shadow_slot, &state = shadow_state;
+const ShadowView* ShadowTracer::step(device::Buffer& shadows, std::size_t m,
+                                     const std::function<void()>& after_step,
+                                     PhaseProfile::StepClock& clock) {
+  HitQueue& hits = hits_;
+  std::vector<std::uint32_t>&slot = slot_, &state = state_;
   // The step works on the requests in place: only the hits, the slots and the states cross.
-  device::Buffer& bslot = scratch(kStepSlots, slot);
-  device::Buffer hit_view = device::Buffer::view(ctx, hits.data(), m * sizeof(rc_hit));
-  device::Buffer& bhits = hit_view.handle() ? hit_view : scratch(kStepHits, m * sizeof(rc_hit));
+  device::Buffer& bslot = im_.scratch(kStepSlots, slot);
+  device::Buffer hit_view = device::Buffer::view(im_.ctx, hits.data(), m * sizeof(rc_hit));
+  device::Buffer& bhits = hit_view.handle() ? hit_view : im_.scratch(kStepHits, m * sizeof(rc_hit));
   if (!hit_view.handle()) write_rows(bhits, hits.data(), m * sizeof(rc_hit));
-  device::Buffer& bstate = scratch(kStepState, state);
-  device::Buffer& bnext = scratch(kStepView, m * sizeof(ShadowView));
+  device::Buffer& bstate = im_.scratch(kStepState, state);
+  device::Buffer& bnext = im_.scratch(kStepView, m * sizeof(ShadowView));
   std::uint32_t um = static_cast<std::uint32_t>(m);
-  shadow_step.arg(0, shadows)
+  im_.shadow_step.arg(0, shadows)
       .arg(1, bslot)
       .arg(2, bhits)
       .arg(3, bstate)
       .arg(4, bnext)
-      .arg(5, scratch(kBlocked, std::size_t{0}))
+      .arg(5, im_.scratch(kBlocked, std::size_t{0}))
       .arg(6, um);
-  set_scene_args(shadow_step, 7);
-  ctx.run(shadow_step, m);
+  im_.set_scene_args(im_.shadow_step, 7);
+  im_.ctx.run(im_.shadow_step, m);
   bstate.read_later(state.data(), m * sizeof(std::uint32_t));
   // The caller's next commands go in the same wait, in case this step is the last; so do
   // the new views of a step this small, in case some go on (each wait is a round trip on a
   // GPU, where reading them after it would be another).
   if (after_step) after_step();
-  const bool views_along = after_step && m <= kSumAlongRays;
+  const bool views_along = after_step && m <= im_.kSumAlongRays;
   const ShadowView* next = nullptr;
   if (views_along)
-    next = static_cast<const ShadowView*>(bnext.peek_later(m * sizeof(ShadowView), peek_view_step));
+    next = static_cast<const ShadowView*>(bnext.peek_later(m * sizeof(ShadowView), step_staging_));
   clock.mark(PhaseProfile::StepShadowSend);
-  ctx.finish();
+  im_.ctx.finish();
   clock.mark(PhaseProfile::StepShadowWait);
   return next;
 }
