@@ -156,6 +156,47 @@ std::array<float, 3> decode_direction(std::int32_t dc) {
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
 }
 
+// The patches' vertices, in patch order (patch i's first is base[i]): positions at the centres
+// of their quantised cells in the mesh's cube, normals and uv where they have them.
+void add_vertices(TriangleMesh& mesh, const std::vector<Patch>& patches,
+                  const std::vector<std::uint32_t>& base, std::uint32_t nverts,
+                  const std::array<double, 3>& cube_org, double cube_size, const double uv_lo[2],
+                  const double uv_hi[2], bool any_n, bool any_uv) {
+  const double vres = cube_size * kInv2to32;
+  mesh.positions.reserve(nverts);
+  mesh.vertex_flags.assign(nverts, 0);
+  if (any_n) mesh.normals.assign(nverts, {0, 0, 0});
+  if (any_uv) mesh.uvs.assign(nverts, {0, 0});
+  for (std::size_t pi = 0; pi < patches.size(); ++pi) {
+    const Patch& p = patches[pi];
+    for (std::size_t v = 0; v < p.xyz.size(); ++v) {
+      const std::uint32_t g = base[pi] + static_cast<std::uint32_t>(v);
+      std::array<double, 3> pos;
+      for (int k = 0; k < 3; ++k) // cell centre of the quantised coordinate
+        pos[k] = cube_org[k] + (p.xyz[v][k] + 0.5) * vres;
+      mesh.positions.push_back(pos);
+      if (!p.norm.empty() && p.norm[v] != 0) { // code 0 means "no normal"
+        mesh.normals[g] = decode_direction(p.norm[v]);
+        mesh.vertex_flags[g] |= TriangleMesh::kHasNormal;
+      }
+      if (!p.uv.empty() && p.uv[v][0] != 0) { // u code 0 is out of range: "no uv"
+        for (int k = 0; k < 2; ++k)
+          mesh.uvs[g][k] =
+              static_cast<float>(uv_lo[k] + (uv_hi[k] - uv_lo[k]) * (p.uv[v][k] + 0.5) * kInv2to32);
+        mesh.vertex_flags[g] |= TriangleMesh::kHasUV;
+      }
+    }
+  }
+  if (!mesh.positions.empty()) {
+    mesh.bbox_min = mesh.bbox_max = mesh.positions[0];
+    for (const auto& p : mesh.positions)
+      for (int k = 0; k < 3; ++k) {
+        mesh.bbox_min[k] = std::min(mesh.bbox_min[k], p[k]);
+        mesh.bbox_max[k] = std::max(mesh.bbox_max[k], p[k]);
+      }
+  }
+}
+
 } // namespace
 
 TriangleMesh read_mesh(const std::string& path) {
@@ -218,39 +259,7 @@ TriangleMesh read_mesh_data(std::string bytes, const std::string& path) {
   }
 
   // Vertices, in patch order.
-  const double vres = cube_size * kInv2to32;
-  mesh.positions.reserve(nverts);
-  mesh.vertex_flags.assign(nverts, 0);
-  if (any_n) mesh.normals.assign(nverts, {0, 0, 0});
-  if (any_uv) mesh.uvs.assign(nverts, {0, 0});
-  for (std::size_t pi = 0; pi < patches.size(); ++pi) {
-    const Patch& p = patches[pi];
-    for (std::size_t v = 0; v < p.xyz.size(); ++v) {
-      const std::uint32_t g = base[pi] + static_cast<std::uint32_t>(v);
-      std::array<double, 3> pos;
-      for (int k = 0; k < 3; ++k) // cell centre of the quantised coordinate
-        pos[k] = cube_org[k] + (p.xyz[v][k] + 0.5) * vres;
-      mesh.positions.push_back(pos);
-      if (!p.norm.empty() && p.norm[v] != 0) { // code 0 means "no normal"
-        mesh.normals[g] = decode_direction(p.norm[v]);
-        mesh.vertex_flags[g] |= TriangleMesh::kHasNormal;
-      }
-      if (!p.uv.empty() && p.uv[v][0] != 0) { // u code 0 is out of range: "no uv"
-        for (int k = 0; k < 2; ++k)
-          mesh.uvs[g][k] =
-              static_cast<float>(uv_lo[k] + (uv_hi[k] - uv_lo[k]) * (p.uv[v][k] + 0.5) * kInv2to32);
-        mesh.vertex_flags[g] |= TriangleMesh::kHasUV;
-      }
-    }
-  }
-  if (!mesh.positions.empty()) {
-    mesh.bbox_min = mesh.bbox_max = mesh.positions[0];
-    for (const auto& p : mesh.positions)
-      for (int k = 0; k < 3; ++k) {
-        mesh.bbox_min[k] = std::min(mesh.bbox_min[k], p[k]);
-        mesh.bbox_max[k] = std::max(mesh.bbox_max[k], p[k]);
-      }
-  }
+  add_vertices(mesh, patches, base, nverts, cube_org, cube_size, uv_lo, uv_hi, any_n, any_uv);
 
   // Triangles in Radiance's triangle-ID order: per patch local, single-, double-joiners.
   auto material = [&](std::int64_t m, const char* what) -> std::int32_t {

@@ -102,6 +102,101 @@ private:
     return std::atof(argv_[i].c_str());
   }
 
+  // The option at argv_[i] and its values (i moves past them).
+  void option(std::size_t& i) {
+    const std::string& a = argv_[i];
+    if (a[0] != '-' && a[0] != '+') use_error("bad option");
+    switch (a.size() > 1 ? a[1] : '\0') {
+    case 'd':
+      dew_point_ = value(i);
+      if (dew_point_ < -40 || dew_point_ > 40) dew_point_ = 10.97353115;
+      break;
+    case 's':
+      cloudy_ = 0;
+      dosun_ = a[0] == '+';
+      break;
+    case 'y':
+      value(i);
+      year_ = std::atoi(argv_[i].c_str());
+      break;
+    case 'R': // solar radiance: accepted and ignored, as in gendaylit
+      value(i);
+      break;
+    case 'c':
+      cloudy_ = a[0] == '+' ? 2 : 1;
+      dosun_ = false;
+      break;
+    case 'C':
+      if (a.compare(1, 3, "CIE") == 0) {
+        const float cie[11] = {-4.607e9f,  2.9678e6f, 0.09911e3f, 0.244063f, -2.0064e9f, 1.9018e6f,
+                               0.24748e3f, 0.23704f,  -3.0f,      2.87f,     -0.275f};
+        std::copy(cie, cie + 11, locus_);
+      } else {
+        color_ = true;
+      }
+      break;
+    case 'l':
+      for (int j = 0; j < 4; ++j)
+        locus_[j] = locus_[j + 4] = static_cast<float>(value(i));
+      for (int j = 8; j < 11; ++j)
+        locus_[j] = static_cast<float>(value(i));
+      break;
+    case 't':
+      turbidity_ = value(i);
+      break;
+    case 'w':
+      quiet_ = true;
+      break;
+    case 'b': // zenith brightness: accepted, only -defaults would show it
+      value(i);
+      break;
+    case 'g':
+      ground_refl_ = value(i);
+      break;
+    case 'a':
+      site_.latitude = value(i) * (kPi / 180);
+      break;
+    case 'o':
+      site_.longitude = value(i) * (kPi / 180);
+      break;
+    case 'm':
+      site_.meridian = value(i) * (kPi / 180);
+      break;
+    case 'O':
+      output_ = static_cast<int>(value(i));
+      break;
+    case 'P':
+      input_ = 0;
+      epsilon_ = value(i);
+      delta_ = value(i);
+      break;
+    case 'W': // direct normal and diffuse horizontal irradiance
+      input_ = 1;
+      direct_irr_ = value(i);
+      diffuse_irr_ = value(i);
+      break;
+    case 'L': // direct normal and diffuse horizontal illuminance
+      input_ = 2;
+      direct_lux_ = value(i);
+      diffuse_lux_ = value(i);
+      break;
+    case 'G': // direct horizontal and diffuse horizontal irradiance
+      input_ = 3;
+      direct_irr_ = value(i);
+      diffuse_irr_ = value(i);
+      break;
+    case 'E': // global horizontal irradiance, split by the Erbs model
+      input_ = 4;
+      global_irr_ = value(i);
+      break;
+    case 'i':
+      interval_ = static_cast<float>(value(i));
+      break;
+    default:
+      use_error("unknown option: " + a);
+    }
+  }
+
   void main() {
     const std::size_t argc = argv_.size();
     if (argc == 2 && argv_[1] == "-defaults") {
@@ -122,100 +217,8 @@ private:
       if (hour_ < 0 || hour_ >= 24) use_error("bad hour");
       solar_time_ = argv_[3][0] == '+';
     }
-    for (std::size_t i = 4; i < argc; ++i) {
-      const std::string& a = argv_[i];
-      if (a[0] != '-' && a[0] != '+') use_error("bad option");
-      switch (a.size() > 1 ? a[1] : '\0') {
-      case 'd':
-        dew_point_ = value(i);
-        if (dew_point_ < -40 || dew_point_ > 40) dew_point_ = 10.97353115;
-        break;
-      case 's':
-        cloudy_ = 0;
-        dosun_ = a[0] == '+';
-        break;
-      case 'y':
-        value(i);
-        year_ = std::atoi(argv_[i].c_str());
-        break;
-      case 'R': // solar radiance: accepted and ignored, as in gendaylit
-        value(i);
-        break;
-      case 'c':
-        cloudy_ = a[0] == '+' ? 2 : 1;
-        dosun_ = false;
-        break;
-      case 'C':
-        if (a.compare(1, 3, "CIE") == 0) {
-          const float cie[11] = {-4.607e9f,  2.9678e6f, 0.09911e3f, 0.244063f,
-                                 -2.0064e9f, 1.9018e6f, 0.24748e3f, 0.23704f,
-                                 -3.0f,      2.87f,     -0.275f};
-          std::copy(cie, cie + 11, locus_);
-        } else {
-          color_ = true;
-        }
-        break;
-      case 'l':
-        for (int j = 0; j < 4; ++j)
-          locus_[j] = locus_[j + 4] = static_cast<float>(value(i));
-        for (int j = 8; j < 11; ++j)
-          locus_[j] = static_cast<float>(value(i));
-        break;
-      case 't':
-        turbidity_ = value(i);
-        break;
-      case 'w':
-        quiet_ = true;
-        break;
-      case 'b': // zenith brightness: accepted, only -defaults would show it
-        value(i);
-        break;
-      case 'g':
-        ground_refl_ = value(i);
-        break;
-      case 'a':
-        site_.latitude = value(i) * (kPi / 180);
-        break;
-      case 'o':
-        site_.longitude = value(i) * (kPi / 180);
-        break;
-      case 'm':
-        site_.meridian = value(i) * (kPi / 180);
-        break;
-      case 'O':
-        output_ = static_cast<int>(value(i));
-        break;
-      case 'P':
-        input_ = 0;
-        epsilon_ = value(i);
-        delta_ = value(i);
-        break;
-      case 'W': // direct normal and diffuse horizontal irradiance
-        input_ = 1;
-        direct_irr_ = value(i);
-        diffuse_irr_ = value(i);
-        break;
-      case 'L': // direct normal and diffuse horizontal illuminance
-        input_ = 2;
-        direct_lux_ = value(i);
-        diffuse_lux_ = value(i);
-        break;
-      case 'G': // direct horizontal and diffuse horizontal irradiance
-        input_ = 3;
-        direct_irr_ = value(i);
-        diffuse_irr_ = value(i);
-        break;
-      case 'E': // global horizontal irradiance, split by the Erbs model
-        input_ = 4;
-        global_irr_ = value(i);
-        break;
-      case 'i':
-        interval_ = static_cast<float>(value(i));
-        break;
-      default:
-        use_error("unknown option: " + a);
-      }
-    }
+    for (std::size_t i = 4; i < argc; ++i)
+      option(i);
     if (month_ && !solar_time_ && std::fabs(site_.meridian - site_.longitude) > 45 * kPi / 180)
       appendf(res_.err, "%s: warning: %.1f hours btwn. standard meridian and longitude\n", prog(),
               (site_.longitude - site_.meridian) * 12 / kPi);
