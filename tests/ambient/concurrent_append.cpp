@@ -71,7 +71,7 @@ int writer(const std::string& path, int p, int start_fd) {
   }
   seen += f.sync().size();
   // Everything in the file is either ours or was reported to us.
-  const AmbientContents c = parse_ambient(rt::slurp(path), "bad ambient file");
+  const AmbientContents c = parse_ambient(rt::read_file(path), "bad ambient file");
   if (c.records.size() < seen + mine) return 2;
   return 0;
 }
@@ -79,7 +79,7 @@ int writer(const std::string& path, int p, int start_fd) {
 } // namespace
 
 TEST(AmbientConcurrency, FourProcessesAppendWithoutLossOrTearing) {
-  rt::ScratchDir dir("concurrent");
+  rt::TempFolder dir("concurrent");
   const std::string path = dir / "shared.amb";
   int start[2];
   ASSERT_EQ(::pipe(start), 0);
@@ -108,8 +108,8 @@ TEST(AmbientConcurrency, FourProcessesAppendWithoutLossOrTearing) {
     EXPECT_EQ(WEXITSTATUS(status), 0) << "writer failure bits (1 echo, 2 missed, 16 threw)";
   }
 
-  rt::WarningLog log;
-  const std::string bytes = rt::slurp(path);
+  rt::CapturedWarnings log;
+  const std::string bytes = rt::read_file(path);
   const AmbientContents c = parse_ambient(bytes, "bad ambient file");
   std::size_t expected = 0;
   for (int p = 0; p < kProcesses; ++p)
@@ -152,5 +152,5 @@ TEST(AmbientConcurrency, FourProcessesAppendWithoutLossOrTearing) {
   // Reopening as a writer finds nothing to repair.
   AmbientFile f;
   EXPECT_EQ(f.open(path, image_header()).size(), expected);
-  EXPECT_TRUE(log.messages().empty());
+  EXPECT_TRUE(log.list().empty());
 }

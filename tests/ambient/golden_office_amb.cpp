@@ -15,7 +15,7 @@ namespace rt = radcl::test;
 namespace {
 
 std::string reference_text() {
-  return rt::slurp(rt::data("results/office_clear_default.amb.txt"));
+  return rt::read_file(rt::data("results/office_clear_default.amb.txt"));
 }
 
 std::string data_lines(const std::vector<AmbientRecord>& records) {
@@ -47,7 +47,7 @@ std::string radcl_bin() {
 } // namespace
 
 TEST(OfficeAmb, HeaderAndRecordCount) {
-  const std::string bytes = rt::slurp(rt::office_amb());
+  const std::string bytes = rt::read_file(rt::office_amb());
   const AmbientContents c = parse_ambient(bytes, "bad ambient file");
   ASSERT_EQ(c.header.lines.size(), 6u);
   EXPECT_EQ(c.header.lines[0], "#?RADIANCE");
@@ -77,7 +77,7 @@ TEST(OfficeAmb, HeaderAndRecordCount) {
 }
 
 TEST(OfficeAmb, DecodesExactlyAsLookamb) {
-  const AmbientContents c = parse_ambient(rt::slurp(rt::office_amb()), "bad ambient file");
+  const AmbientContents c = parse_ambient(rt::read_file(rt::office_amb()), "bad ambient file");
   const std::string ours = data_lines(c.records);
   const std::string ref = reference_text();
   ASSERT_EQ(ours.size(), ref.size());
@@ -93,7 +93,7 @@ TEST(OfficeAmb, DecodesExactlyAsLookamb) {
 }
 
 TEST(OfficeAmb, RewritingReproducesTheBytes) {
-  const std::string bytes = rt::slurp(rt::office_amb());
+  const std::string bytes = rt::read_file(rt::office_amb());
   const AmbientContents c = parse_ambient(bytes, "bad ambient file");
   std::string out;
   for (const auto& r : c.records) {
@@ -125,7 +125,7 @@ TEST(OfficeAmb, TextRoundTrips) {
 }
 
 TEST(OfficeAmb, VerboseLayout) {
-  const AmbientContents c = parse_ambient(rt::slurp(rt::office_amb()), "bad ambient file");
+  const AmbientContents c = parse_ambient(rt::read_file(rt::office_amb()), "bad ambient file");
   // First record of the reference text, in lookamb's labelled layout.
   EXPECT_EQ(format_record(c.records[0], false),
             "Position:\t6.000000\t2.530310\t1.835439\n"
@@ -139,18 +139,19 @@ TEST(OfficeAmb, VerboseLayout) {
 }
 
 TEST(RadclAmbient, DataOnlyWithoutHeaderMatchesLookamb) {
-  rt::ScratchDir dir("cli-d");
+  rt::TempFolder dir("cli-d");
   ASSERT_EQ(rt::run_command(radcl_bin() + " ambient -d -h " + rt::office_amb() + " > " +
-                            (dir / "out.txt")),
+                            (dir / "out.txt").string()),
             0);
-  EXPECT_TRUE(rt::slurp(dir / "out.txt") == reference_text());
+  EXPECT_TRUE(rt::read_file(dir / "out.txt") == reference_text());
 }
 
 TEST(RadclAmbient, HeaderIsCopiedWithAsciiFormat) {
-  rt::ScratchDir dir("cli-h");
-  ASSERT_EQ(
-      rt::run_command(radcl_bin() + " ambient " + rt::office_amb() + " > " + (dir / "out.txt")), 0);
-  const std::string out = rt::slurp(dir / "out.txt");
+  rt::TempFolder dir("cli-h");
+  ASSERT_EQ(rt::run_command(radcl_bin() + " ambient " + rt::office_amb() + " > " +
+                            (dir / "out.txt").string()),
+            0);
+  const std::string out = rt::read_file(dir / "out.txt");
   const std::string head = "#?RADIANCE\n"
                            "rtrace -av 0 0 0 -aw 0 -ab 5 -aa 0.15 -ad 1024 -as 256 -ar 256 "
                            "office_clear.oct\n"
@@ -165,16 +166,16 @@ TEST(RadclAmbient, HeaderIsCopiedWithAsciiFormat) {
 }
 
 TEST(RadclAmbient, ReverseConversionRoundTrips) {
-  rt::ScratchDir dir("cli-r");
+  rt::TempFolder dir("cli-r");
   const std::string amb = rt::office_amb();
   // Binary -> text with header -> binary: the header comes back with its FORMAT restored, and
   // the records print as before, except that a printed "-0.000000" (a tiny negative) comes
   // back as "0.000000": a 5-byte real's zero has no sign, in Radiance's lookamb -r too.
   ASSERT_EQ(rt::run_command(radcl_bin() + " ambient -d " + amb + " | " + radcl_bin() +
-                            " ambient -d -r > " + (dir / "a.amb")),
+                            " ambient -d -r > " + (dir / "a.amb").string()),
             0);
-  const std::string a = rt::slurp(dir / "a.amb");
-  const std::string orig = rt::slurp(amb);
+  const std::string a = rt::read_file(dir / "a.amb");
+  const std::string orig = rt::read_file(amb);
   const AmbientContents ca = parse_ambient(a, "bad ambient file");
   const AmbientContents co = parse_ambient(orig, "bad ambient file");
   EXPECT_EQ(a.substr(0, ca.data_start), orig.substr(0, co.data_start));
@@ -183,14 +184,14 @@ TEST(RadclAmbient, ReverseConversionRoundTrips) {
   EXPECT_TRUE(data_lines(ca.records) == without_negative_zeros(reference_text()));
   // The converted file is a fixed point: text and back gives the same bytes, in both
   // layouts; labelled text without header gets a fresh header naming the command.
-  ASSERT_EQ(rt::run_command(radcl_bin() + " ambient -d " + (dir / "a.amb") + " | " + radcl_bin() +
-                            " ambient -d -r > " + (dir / "b.amb")),
+  ASSERT_EQ(rt::run_command(radcl_bin() + " ambient -d " + (dir / "a.amb").string() + " | " +
+                            radcl_bin() + " ambient -d -r > " + (dir / "b.amb").string()),
             0);
-  EXPECT_TRUE(rt::slurp(dir / "b.amb") == a);
-  ASSERT_EQ(rt::run_command(radcl_bin() + " ambient -h " + (dir / "a.amb") + " | " + radcl_bin() +
-                            " ambient -h -r > " + (dir / "c.amb")),
+  EXPECT_TRUE(rt::read_file(dir / "b.amb") == a);
+  ASSERT_EQ(rt::run_command(radcl_bin() + " ambient -h " + (dir / "a.amb").string() + " | " +
+                            radcl_bin() + " ambient -h -r > " + (dir / "c.amb").string()),
             0);
-  const std::string c = rt::slurp(dir / "c.amb");
+  const std::string c = rt::read_file(dir / "c.amb");
   const std::string prologue =
       "#?RADIANCE\nradcl ambient -h -r\nFORMAT=Radiance_ambval\n\n\x02\x2f";
   EXPECT_EQ(c.substr(0, prologue.size()), prologue);
@@ -198,23 +199,23 @@ TEST(RadclAmbient, ReverseConversionRoundTrips) {
 }
 
 TEST(RadclAmbient, FormatErrorsAreFatal) {
-  rt::ScratchDir dir("cli-bad");
-  std::string bytes = rt::slurp(rt::office_amb());
+  rt::TempFolder dir("cli-bad");
+  std::string bytes = rt::read_file(rt::office_amb());
   const AmbientContents c = parse_ambient(bytes, "bad ambient file");
   bytes[c.data_start - 1] = 0x2d; // magic 557: a Radiance 4 file
-  rt::spit(dir / "old.amb", bytes);
+  rt::write_file(dir / "old.amb", bytes);
   std::string out;
-  EXPECT_EQ(rt::run_command(radcl_bin() + " ambient -d -h " + (dir / "old.amb"), &out), 1);
+  EXPECT_EQ(rt::run_command(radcl_bin() + " ambient -d -h " + (dir / "old.amb").string(), &out), 1);
   EXPECT_EQ(out, "radcl: fatal - format error on input\n");
   // -r on text whose header says it is not ascii.
-  rt::spit(dir / "t.txt", "#?RADIANCE\nFORMAT=Radiance_ambval\n\n");
+  rt::write_file(dir / "t.txt", "#?RADIANCE\nFORMAT=Radiance_ambval\n\n");
   out.clear();
-  EXPECT_EQ(rt::run_command(radcl_bin() + " ambient -r " + (dir / "t.txt"), &out), 1);
+  EXPECT_EQ(rt::run_command(radcl_bin() + " ambient -r " + (dir / "t.txt").string(), &out), 1);
   EXPECT_EQ(out, "radcl: fatal - format error on input\n");
   out.clear();
   EXPECT_EQ(rt::run_command(radcl_bin() + " ambient -x", &out), 1);
   EXPECT_EQ(out, "radcl: fatal - ambient: unknown option '-x'\n");
   out.clear();
-  EXPECT_EQ(rt::run_command(radcl_bin() + " ambient " + (dir / "missing.amb"), &out), 1);
-  EXPECT_EQ(out, "radcl: fatal - " + (dir / "missing.amb") + ": file not found\n");
+  EXPECT_EQ(rt::run_command(radcl_bin() + " ambient " + (dir / "missing.amb").string(), &out), 1);
+  EXPECT_EQ(out, "radcl: fatal - " + (dir / "missing.amb").string() + ": file not found\n");
 }

@@ -5,12 +5,12 @@
 #include "radcl/bsdf/xml_reader.h"
 #include "radcl/util/error.h"
 
+#include "files.h"
 #include "test_env.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <iterator>
 
 using namespace radcl::bsdf;
@@ -184,8 +184,7 @@ TEST(KlemsBasis, FileDefinedBasisReadsExactly) {
 // "Rows" puts the incident direction on the file's rows: the same text read that way is the
 // transpose.
 TEST(KlemsBasis, RowsAreTheTranspose) {
-  std::ifstream file(radcl::test::data("bsdf/klems_3ring.xml"));
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  std::string text = radcl::test::read_file(radcl::test::data("bsdf/klems_3ring.xml"));
   const size_t at = text.find("<IncidentDataStructure>Columns");
   ASSERT_NE(at, std::string::npos);
   text.replace(at + 23, 7, "Rows");

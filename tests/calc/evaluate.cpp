@@ -8,25 +8,17 @@
 #include "radcl/calc/evaluator.h"
 #include "radcl/calc/program.h"
 #include "radcl/util/error.h"
+#include "warnings.h"
 
 using namespace radcl::calc;
 using radcl::FatalError;
 
 namespace {
 
-std::vector<std::string> g_warnings;
-void capture(const std::string& msg) {
-  g_warnings.push_back(msg);
-}
-
 struct Calc : ::testing::Test {
   Program prog;
   Evaluator ev{prog};
-  void SetUp() override {
-    g_warnings.clear();
-    radcl::set_warning_sink(capture);
-  }
-  void TearDown() override { radcl::set_warning_sink(nullptr); }
+  radcl::test::CapturedWarnings warnings;
   double eval(const std::string& text) { return ev.eval(prog.parse_expression(text)); }
   std::string error_of(const std::string& text) {
     try {
@@ -87,8 +79,8 @@ TEST_F(Calc, StatementsAcrossFiles) {
   Expression e = prog.parse_expression("f(1)");
   prog.load_string("y = 10;", "three.cal");
   EXPECT_EQ(ev.eval(e), 10);
-  ASSERT_EQ(g_warnings.size(), 1u);
-  EXPECT_EQ(g_warnings[0], "y: redefined");
+  ASSERT_EQ(warnings.list().size(), 1u);
+  EXPECT_EQ(warnings.list()[0], "y: redefined");
 }
 
 TEST_F(Calc, ConstantsFoldAtParseTime) {
@@ -124,7 +116,7 @@ TEST_F(Calc, CallByNeedArguments) {
   EXPECT_EQ(error_of("second(1)"), "second: too few arguments");
   // An unused argument is never evaluated (no division warning).
   EXPECT_EQ(eval("first(2, 1/z)"), 2);
-  EXPECT_TRUE(g_warnings.empty());
+  EXPECT_TRUE(warnings.list().empty());
 }
 
 TEST_F(Calc, IfAndSelect) {
@@ -133,15 +125,15 @@ TEST_F(Calc, IfAndSelect) {
   EXPECT_EQ(eval("if(0, 2, 3)"), 3);
   EXPECT_EQ(eval("if(-1, 2, 3)"), 3);
   EXPECT_EQ(eval("if(1, 2, 1/z)"), 2); // only the chosen branch is evaluated
-  EXPECT_TRUE(g_warnings.empty());
+  EXPECT_TRUE(warnings.list().empty());
   EXPECT_EQ(eval("select(2, 10, 20, 30)"), 20);
   EXPECT_EQ(eval("select(2.4, 10, 20, 30)"), 20);
   EXPECT_EQ(eval("select(2.6, 10, 20, 30)"), 30);
   EXPECT_EQ(eval("select(0, 10, 20, 30)"), 3);   // 0: number of choices
   EXPECT_EQ(eval("select(z+4, 10, 20, 30)"), 0); // out of range: domain error, 0
   EXPECT_EQ(eval("select(z-1, 10, 20, 30)"), 0);
-  ASSERT_EQ(g_warnings.size(), 2u);
-  EXPECT_EQ(g_warnings[0], "select: domain error");
+  ASSERT_EQ(warnings.list().size(), 2u);
+  EXPECT_EQ(warnings.list()[0], "select: domain error");
   EXPECT_EQ(eval("min(3, 1, 2)"), 1);
   EXPECT_EQ(eval("max(3, 1, 5, 2)"), 5);
 }
@@ -187,7 +179,7 @@ TEST_F(Calc, RayinitDefinitions) {
   prog.load_string("v1(i) = select(i, 1, 0, 0); v2(i) = select(i, 0, 1, 0);", "vec.cal");
   EXPECT_EQ(eval("dot(v1, v2)"), 0);
   EXPECT_EQ(eval("cross(3, v1, v2)"), 1); // x cross y = z
-  EXPECT_TRUE(g_warnings.empty());
+  EXPECT_TRUE(warnings.list().empty());
 }
 
 TEST_F(Calc, LibraryFunctions) {
@@ -217,12 +209,12 @@ TEST_F(Calc, ArithmeticErrorsGiveZeroWithWarning) {
   EXPECT_EQ(eval("sqrt(z-1) + 1"), 1);
   EXPECT_EQ(eval("log(z)"), 0);
   EXPECT_EQ(eval("exp(1000+z)"), 0);
-  ASSERT_EQ(g_warnings.size(), 5u);
-  EXPECT_EQ(g_warnings[0], "Division by zero");
-  EXPECT_EQ(g_warnings[1], "Illegal power");
-  EXPECT_EQ(g_warnings[2], "sqrt: domain error");
-  EXPECT_EQ(g_warnings[3], "log: range error");
-  EXPECT_EQ(g_warnings[4], "exp: range error");
+  ASSERT_EQ(warnings.list().size(), 5u);
+  EXPECT_EQ(warnings.list()[0], "Division by zero");
+  EXPECT_EQ(warnings.list()[1], "Illegal power");
+  EXPECT_EQ(warnings.list()[2], "sqrt: domain error");
+  EXPECT_EQ(warnings.list()[3], "log: range error");
+  EXPECT_EQ(warnings.list()[4], "exp: range error");
   EXPECT_EQ(ev.errors(), RC_CALC_ERR_DIVIDE | RC_CALC_ERR_POWER | RC_CALC_ERR_DOMAIN);
 }
 

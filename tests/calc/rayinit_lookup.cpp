@@ -9,6 +9,7 @@
 
 #include "radcl/calc/evaluator.h"
 #include "radcl/calc/program.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
@@ -16,8 +17,8 @@ using radcl::calc::Evaluator;
 using radcl::calc::Program;
 
 TEST(RayinitLookup, RaypathFirstThenOwnLibrary) {
-  const fs::path dir = fs::temp_directory_path() / ("radcl_rayinit_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const radcl::test::TempFolder tmp("rayinit");
+  const fs::path& dir = tmp.path();
   std::ofstream(dir / "rayinit.cal") << "marker = 42;\n";
   const char* old = std::getenv("RAYPATH");
   const std::string saved = old ? old : "";
@@ -42,5 +43,4 @@ TEST(RayinitLookup, RaypathFirstThenOwnLibrary) {
     setenv("RAYPATH", saved.c_str(), 1);
   else
     unsetenv("RAYPATH");
-  fs::remove_all(dir);
 }

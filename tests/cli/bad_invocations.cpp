@@ -8,10 +8,10 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 
 #include <cstdint>
 
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
@@ -111,9 +111,6 @@ std::string filled(std::string s, const std::string& tmp) {
 class BadInvocations : public ::testing::TestWithParam<int> {
 protected:
   void SetUp() override {
-    tmp_ = fs::temp_directory_path() /
-           ("radcl-bad-" + std::to_string(::getpid()) + "-" + std::to_string(GetParam()));
-    fs::create_directories(tmp_);
     std::ofstream(tmp_ / "self.opt") << "@" << (tmp_ / "self.opt").string() << "\n";
     // Two files that name each other after other words: the line grows without end.
     std::ofstream(tmp_ / "ping.opt") << "-aa .1 @" << (tmp_ / "pong.opt").string() << "\n";
@@ -133,8 +130,8 @@ protected:
         f << "-ab 0 ";
     }
   }
-  void TearDown() override { fs::remove_all(tmp_); }
-  fs::path tmp_;
+  radcl::test::TempFolder folder_{"bad_invocation"};
+  const fs::path& tmp_ = folder_.path();
 };
 
 TEST_P(BadInvocations, ClearMessageAndStatus) {

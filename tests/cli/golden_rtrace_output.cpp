@@ -4,13 +4,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "files.h"
 #include "reference_data.h"
+#include "run_program.h"
 #include "test_env.h"
 
 using radcl::test::run_command;
@@ -21,13 +22,12 @@ const std::string kDirect = "-ab 0 -dj 0 -ds 0.02 -dt 0 -dc 1";
 
 // Runs rtrace in the scene folder with `args`, input from `input` (a file in that folder).
 std::string rtrace(const std::string& args, const std::string& input, int* rc = nullptr) {
-  std::string out;
-  int status =
-      run_command("cd " + radcl::test::data("scenes") + " && (" + radcl::test::bin_dir() +
-                      "/rtrace " + args + " materials_plain.oct < " + input + " 2>/dev/null)",
-                  &out);
-  if (rc) *rc = status;
-  return out;
+  const radcl::test::ProgramRun r =
+      radcl::test::Program("rtrace")
+          .input(radcl::test::read_file(radcl::test::data("scenes/" + input)))
+          .run(args + " materials_plain.oct");
+  if (rc) *rc = r.rc;
+  return r.out;
 }
 
 std::vector<std::vector<std::string>> rows(const std::string& text) {
@@ -46,11 +46,6 @@ std::vector<std::vector<std::string>> rows(const std::string& text) {
   return out;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 double lum(double r, double g, double b) {
   return 0.265 * r + 0.670 * g + 0.065 * b;
 }
@@ -59,8 +54,8 @@ double lum(double r, double g, double b) {
 
 TEST(GoldenRtraceOutput, GeometricFieldsAndNames) {
   auto ours = rows(rtrace("-h -ooodLpnNsmM", "materials_rays.txt"));
-  auto ref =
-      rows(slurp(radcl::test::data("results/materials_plain_rays_oodvVwWlLcpnNsmMrxRX.txt")));
+  auto ref = rows(radcl::test::read_file(
+      radcl::test::data("results/materials_plain_rays_oodvVwWlLcpnNsmMrxRX.txt")));
   ASSERT_EQ(ours.size(), 160u);
   ASSERT_EQ(ref.size(), 160u);
   // Column of each of our letters in the reference line (o o d v V w W l L c p n N s m M ...).
@@ -85,8 +80,8 @@ TEST(GoldenRtraceOutput, GeometricFieldsAndNames) {
 // rays, the mirrored part and the mirrored and unmirrored lengths.
 TEST(GoldenRtraceOutput, ValueLettersEndToEnd) {
   auto ours = rows(rtrace("-h -u- " + kDirect + " -ooodvVwWlLcpnNsmMrxRX", "materials_rays.txt"));
-  auto ref =
-      rows(slurp(radcl::test::data("results/materials_plain_rays_oodvVwWlLcpnNsmMrxRX.txt")));
+  auto ref = rows(radcl::test::read_file(
+      radcl::test::data("results/materials_plain_rays_oodvVwWlLcpnNsmMrxRX.txt")));
   ASSERT_EQ(ours.size(), ref.size());
   struct Letter {
     char name;
@@ -129,8 +124,8 @@ TEST(GoldenRtraceOutput, DirectValuesEndToEnd) {
 TEST(GoldenRtraceOutput, AmbientWithoutCache) {
   auto ours = rows(rtrace("-h -ab 1 -aa 0 -ad 2048 -lw 1e-5 -ov", "materials_rays.txt"));
   auto ref = radcl::test::read_rgb(radcl::test::data("results/materials_plain_rays_aa0.txt"));
-  auto names =
-      rows(slurp(radcl::test::data("results/materials_plain_rays_oodvVwWlLcpnNsmMrxRX.txt")));
+  auto names = rows(radcl::test::read_file(
+      radcl::test::data("results/materials_plain_rays_oodvVwWlLcpnNsmMrxRX.txt")));
   ASSERT_EQ(ours.size(), ref.size());
   double sum = 0;
   int n = 0;
@@ -150,8 +145,10 @@ TEST(GoldenRtraceOutput, BinaryFormats) {
   // Float and double in, float and double out: 3 host-order numbers per ray, nothing else.
   std::string ff = rtrace("-h -u- " + kDirect + " -ff -ov", "materials_rays.f32");
   std::string fd = rtrace("-h -u- " + kDirect + " -fd -ov", "materials_rays.f64");
-  std::string ref_ff = slurp(radcl::test::data("results/materials_plain_rays_ff.f32"));
-  std::string ref_fd = slurp(radcl::test::data("results/materials_plain_rays_fd.f64"));
+  std::string ref_ff =
+      radcl::test::read_file(radcl::test::data("results/materials_plain_rays_ff.f32"));
+  std::string ref_fd =
+      radcl::test::read_file(radcl::test::data("results/materials_plain_rays_fd.f64"));
   ASSERT_EQ(ff.size(), ref_ff.size());
   ASSERT_EQ(fd.size(), ref_fd.size());
   std::vector<float> a(ff.size() / 4), b(ff.size() / 4);
@@ -170,7 +167,8 @@ TEST(GoldenRtraceOutput, BinaryFormats) {
   EXPECT_LE(far_d, static_cast<int>(c.size() / 20));
   // Ascii in, 4-byte RGBE out.
   std::string fac = rtrace("-h -u- " + kDirect + " -fac -ov", "materials_rays.txt");
-  std::string ref_fac = slurp(radcl::test::data("results/materials_plain_rays_fac.bin"));
+  std::string ref_fac =
+      radcl::test::read_file(radcl::test::data("results/materials_plain_rays_fac.bin"));
   ASSERT_EQ(fac.size(), ref_fac.size());
   int same_exponent = 0;
   for (std::size_t i = 0; i < fac.size(); i += 4)
@@ -180,7 +178,8 @@ TEST(GoldenRtraceOutput, BinaryFormats) {
 
 TEST(GoldenRtraceOutput, HeaderWithoutDashH) {
   std::string out = rtrace("-u- " + kDirect + " -ov", "materials_rays.txt");
-  std::string ref = slurp(radcl::test::data("results/materials_plain_rays_header.txt"));
+  std::string ref =
+      radcl::test::read_file(radcl::test::data("results/materials_plain_rays_header.txt"));
   auto lines = [](const std::string& s) {
     std::vector<std::string> v;
     std::istringstream in(s);

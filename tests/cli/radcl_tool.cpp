@@ -5,14 +5,15 @@
 #include <gtest/gtest.h>
 #include <string>
 
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
 using radcl::test::run_command;
 
 TEST(RadclTool, MovedBinaryChecksItsDevice) {
-  fs::path dir = fs::temp_directory_path() / ("radcl-moved-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const radcl::test::TempFolder tmp("moved");
+  const fs::path& dir = tmp.path();
   fs::copy_file(radcl::test::bin_dir() + "/radcl", dir / "radcl",
                 fs::copy_options::overwrite_existing);
   std::string out;
@@ -24,7 +25,6 @@ TEST(RadclTool, MovedBinaryChecksItsDevice) {
   EXPECT_NE(out.find("struct layout: ok"), std::string::npos) << out;
   EXPECT_NE(out.find("random numbers: ok"), std::string::npos) << out;
   EXPECT_NE(out.find("* "), std::string::npos) << "a device is marked as selected:\n" << out;
-  fs::remove_all(dir);
 }
 
 TEST(RadclTool, UnknownCommandIsFatal) {

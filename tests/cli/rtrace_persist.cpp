@@ -11,6 +11,7 @@
 #include <thread>
 #include <unistd.h>
 
+#include "temp_dir.h"
 #include "test_env.h"
 
 using radcl::test::run_command;
@@ -22,23 +23,18 @@ const std::string kOpts = "-h -ab 0 -u- ";
 const std::string kRays1 = "0.5 0.1 0.5 0 1 0\n";
 const std::string kRays2 = "0.5 0.1 0.5 0 1 0.2\n0.3 0.1 0.5 0 1 0\n0.7 0.2 0.4 0.1 1 -0.3\n";
 
-class RtracePersist : public ::testing::Test {
+class RtracePersist : public radcl::test::TempDir {
 protected:
-  fs::path dir;
   std::string pfile;
   void SetUp() override {
-    dir = fs::temp_directory_path() /
-          ("radcl-persist-" + std::to_string(::getpid()) + "-" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    TempDir::SetUp();
     pfile = (dir / "pfile").string();
     std::ofstream(dir / "rays1") << kRays1;
     std::ofstream(dir / "rays2") << kRays2;
   }
   void TearDown() override {
     fs::remove(pfile); // ends any server left behind
-    fs::remove_all(dir);
+    TempDir::TearDown();
   }
   int rtrace(const std::string& args, std::string* out) {
     out->clear();

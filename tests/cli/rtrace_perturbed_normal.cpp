@@ -9,10 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "run_program.h"
 #include "temp_dir.h"
 #include "test_env.h"
-
-using radcl::test::run_command;
 
 namespace {
 
@@ -91,14 +90,14 @@ protected:
   }
 
   std::vector<std::vector<double>> rtrace(const std::string& args, const std::string& rays) {
-    std::ofstream(dir / "rays.txt") << rays;
-    std::string out;
-    int rc = run_command("cd " + dir.string() + " && " + radcl::test::bin_dir() + "/rtrace -h " +
-                             args + " scene.rad < rays.txt 2>&1",
-                         &out);
-    EXPECT_EQ(rc, 0) << out;
+    const radcl::test::ProgramRun r = radcl::test::Program("rtrace")
+                                          .input(rays)
+                                          .in(dir.string())
+                                          .merge_err()
+                                          .run("-h " + args + " scene.rad");
+    EXPECT_EQ(r.rc, 0) << r.out;
     std::vector<std::vector<double>> rows;
-    std::istringstream in(out);
+    std::istringstream in(r.out);
     for (std::string line; std::getline(in, line);) {
       std::istringstream f(line);
       std::vector<double> v;

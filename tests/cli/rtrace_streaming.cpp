@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace {
@@ -111,7 +112,8 @@ TEST(RtraceStreaming, BuildingACacheAnswersAtFlushPoints) {
 // A tool driving rtrace with its options in a file and -x N (no -y): every N rays are answered
 // before it sends more.
 TEST(RtraceStreaming, FlushesEveryXRays) {
-  const std::string opt = "/tmp/radcl_stream_" + std::to_string(getpid()) + ".opt";
+  const radcl::test::TempFolder dir("stream");
+  const std::string opt = (dir / "x.opt").string();
   {
     std::FILE* f = std::fopen(opt.c_str(), "w");
     ASSERT_NE(f, nullptr);
@@ -127,5 +129,4 @@ TEST(RtraceStreaming, FlushesEveryXRays) {
       ASSERT_FALSE(p.read_line(60000).empty()) << "round " << round << ", answer " << k;
   }
   EXPECT_EQ(p.finish(), 0);
-  std::remove(opt.c_str());
 }

@@ -6,9 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "test_env.h"
-
-using radcl::test::run_command;
+#include "run_program.h"
 
 namespace {
 
@@ -21,12 +19,10 @@ struct Line {
 // Runs rtrace in the scene folder on `rays` (ascii, one per line).
 std::vector<Line> rtrace(const std::string& args, const std::string& scene, const std::string& rays,
                          std::string* raw = nullptr) {
-  std::string out;
-  int rc =
-      run_command("cd " + radcl::test::data("scenes") + " && printf '" + rays + "' | " +
-                      radcl::test::bin_dir() + "/rtrace -h -w -u- " + args + " " + scene + " 2>&1",
-                  &out);
-  EXPECT_EQ(rc, 0) << out;
+  const radcl::test::ProgramRun r =
+      radcl::test::Program("rtrace").input(rays).merge_err().run("-h -w -u- " + args + " " + scene);
+  const std::string& out = r.out;
+  EXPECT_EQ(r.rc, 0) << out;
   if (raw) *raw = out;
   std::vector<Line> lines;
   std::istringstream in(out);
@@ -46,7 +42,7 @@ std::vector<Line> rtrace(const std::string& args, const std::string& scene, cons
   return lines;
 }
 
-const std::string kLum = "2 2 0.5 0 0 1\\n1 3 0.8 0 0 1\\n";
+const std::string kLum = "2 2 0.5 0 0 1\n1 3 0.8 0 0 1\n";
 
 } // namespace
 
@@ -80,9 +76,9 @@ TEST(RtraceTrace, ShadowRaysAddUpToThePrimary) {
 // and the primary comes last; -ot leaves the shadow rays out.
 TEST(RtraceTrace, PostOrderAndShadowRaysOnlyWithCapitalT) {
   auto with =
-      rtrace("-ab 1 -ad 16 -as 0 -aa 0 -otTLsw", "materials_plain.oct", "0 -3 1.5 0.1 1 -0.2\\n");
+      rtrace("-ab 1 -ad 16 -as 0 -aa 0 -otTLsw", "materials_plain.oct", "0 -3 1.5 0.1 1 -0.2\n");
   auto without =
-      rtrace("-ab 1 -ad 16 -as 0 -aa 0 -otLsw", "materials_plain.oct", "0 -3 1.5 0.1 1 -0.2\\n");
+      rtrace("-ab 1 -ad 16 -as 0 -aa 0 -otLsw", "materials_plain.oct", "0 -3 1.5 0.1 1 -0.2\n");
   for (const auto* ls : {&with, &without}) {
     ASSERT_GE(ls->size(), 2u);
     EXPECT_EQ(ls->back().depth, 0);
@@ -101,7 +97,7 @@ TEST(RtraceTrace, PostOrderAndShadowRaysOnlyWithCapitalT) {
 
 // -ti keeps only rays that hit a surface with a listed modifier; -te drops them.
 TEST(RtraceTrace, IncludeAndExcludeLists) {
-  const std::string ray = "0 -3 1.5 0.1 1 -0.2\\n";
+  const std::string ray = "0 -3 1.5 0.1 1 -0.2\n";
   auto all = rtrace("-ab 1 -ad 16 -as 0 -aa 0 -otm", "materials_plain.oct", ray);
   auto inc = rtrace("-ab 1 -ad 16 -as 0 -aa 0 -ti sky_glow -otm", "materials_plain.oct", ray);
   auto exc = rtrace("-ab 1 -ad 16 -as 0 -aa 0 -te sky_glow -otm", "materials_plain.oct", ray);
@@ -118,7 +114,7 @@ TEST(RtraceTrace, IncludeAndExcludeLists) {
 // Binary output keeps the indentation TABs (as Radiance's tabin), no newlines.
 TEST(RtraceTrace, BinaryOutputIsIndented) {
   std::string raw;
-  rtrace("-ab 0 -faf -otTw", "luminaires.rad", "2 2 0.5 0 0 1\\n", &raw);
+  rtrace("-ab 0 -faf -otTw", "luminaires.rad", "2 2 0.5 0 0 1\n", &raw);
   ASSERT_FALSE(raw.empty());
   EXPECT_EQ(raw.find('\n'), std::string::npos);
   EXPECT_EQ(raw[0], '\t');

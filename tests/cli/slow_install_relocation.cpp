@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
@@ -17,9 +17,8 @@ using radcl::test::run_command;
 
 TEST(InstallRelocation, MovedInstallRendersEveryReferenceScene) {
   const fs::path build = fs::absolute(radcl::test::bin_dir()).parent_path();
-  const fs::path tmp = fs::temp_directory_path() / ("radcl_install_" + std::to_string(getpid()));
-  fs::remove_all(tmp);
-  fs::create_directories(tmp);
+  const radcl::test::TempFolder folder("install");
+  const fs::path& tmp = folder.path();
   std::string out;
   ASSERT_EQ(
       run_command("cmake --install " + build.string() + " --prefix " + (tmp / "P").string(), &out),
@@ -71,5 +70,4 @@ TEST(InstallRelocation, MovedInstallRendersEveryReferenceScene) {
   EXPECT_NE(out.find("rtrace: fatal - cannot find function file \"rayinit.cal\""),
             std::string::npos)
       << out;
-  fs::remove_all(tmp);
 }

@@ -6,32 +6,28 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <gtest/gtest.h>
 #include <limits>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
+#include "files.h"
+#include "run_program.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
+using radcl::test::read_file;
 using radcl::test::run_command;
+using radcl::test::write_file;
 
 namespace {
 
+// Files of this process's runs, in one folder removed at exit.
 fs::path temp(const std::string& name) {
-  return fs::temp_directory_path() / ("radcl-bad-" + std::to_string(::getpid()) + "-" + name);
-}
-
-void write_file(const fs::path& p, const std::string& text) {
-  std::ofstream(p, std::ios::binary) << text;
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
+  static const radcl::test::TempFolder dir("bad_numbers");
+  return dir / name;
 }
 
 struct Result {
@@ -39,21 +35,11 @@ struct Result {
   std::string out, log;
 };
 
-// rtrace `opts` `scene` with standard input from a file holding `input`.
+// rtrace `opts` `scene` with standard input `input`.
 Result rtrace(const std::string& opts, const std::string& scene, const std::string& input) {
-  fs::path in = temp("in"), out = temp("out"), err = temp("err");
-  write_file(in, input);
-  Result r;
-  // In a subshell: run_command's own "2>&1" then cannot take rtrace's stderr.
-  r.rc = run_command("(cd " + radcl::test::data("scenes") + " && " + radcl::test::bin_dir() +
-                     "/rtrace -h " + opts + " " + scene + " < " + in.string() + " > " +
-                     out.string() + " 2> " + err.string() + ")");
-  r.out = read_file(out);
-  r.log = read_file(err);
-  fs::remove(in);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
+  const radcl::test::ProgramRun r =
+      radcl::test::Program("rtrace").input(input).run("-h " + opts + " " + scene);
+  return {r.rc, r.out, r.err};
 }
 
 std::vector<double> words(const std::string& text) {

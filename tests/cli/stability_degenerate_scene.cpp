@@ -1,18 +1,15 @@
 // Issue 8 case 3 through the rtrace program: degenerate surfaces give Radiance 5.4a's warnings
 // (the surface is ignored, the run goes on, exit status 0) and a negative ring radius its fatal
 // error (exit status 1, nothing written).
-#include <filesystem>
-#include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
+#include "files.h"
+#include "run_program.h"
+#include "temp_dir.h"
 #include "test_env.h"
-
-namespace fs = std::filesystem;
-using radcl::test::run_command;
 
 namespace {
 
@@ -21,24 +18,13 @@ struct Result {
   std::string out, log;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
+// rtrace `opts` on the scene text `scene` (s.rad in a folder of its own) with input `input`.
 Result rtrace(const std::string& opts, const std::string& scene, const std::string& input) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("radcl-degenerate-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "s.rad") << scene;
-  std::ofstream(dir / "in") << input;
-  Result r;
-  r.rc = run_command("(cd " + dir.string() + " && " + radcl::test::bin_dir() + "/rtrace -h " +
-                     opts + " s.rad < in > out 2> err)");
-  r.out = slurp(dir / "out");
-  r.log = slurp(dir / "err");
-  fs::remove_all(dir);
-  return r;
+  const radcl::test::TempFolder dir("degenerate");
+  radcl::test::write_file(dir / "s.rad", scene);
+  const radcl::test::ProgramRun r =
+      radcl::test::Program("rtrace").input(input).in(dir.str()).run("-h " + opts + " s.rad");
+  return {r.rc, r.out, r.err};
 }
 
 const char* kLamp = "void light lm 0 0 3 100 100 100\nlm sphere lamp 0 0 4 0 0 3 0.1\n"

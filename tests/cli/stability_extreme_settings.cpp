@@ -10,13 +10,12 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "reference_data.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
-namespace fs = std::filesystem;
 using radcl::test::run_command;
 
 namespace {
@@ -28,12 +27,10 @@ double exact(int bounces) {
   return kEd * (1 - std::pow(kRho, bounces + 1)) / (1 - kRho);
 }
 
-class StabilityExtremeSettings : public ::testing::Test {
+class StabilityExtremeSettings : public radcl::test::TempDir {
 protected:
-  fs::path dir;
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl-extreme-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    TempDir::SetUp();
     std::ofstream(dir / "sphere95.rad") << "void plastic wall\n0\n0\n5 0.95 0.95 0.95 0 0\n"
                                         << "void light emitter\n0\n0\n3 1000 1000 1000\n"
                                         << "wall bubble shell\n0\n0\n4 0 0 0 1\n"
@@ -44,7 +41,6 @@ protected:
       pts << rays[i * 4][0] << " " << rays[i * 4][1] << " " << rays[i * 4][2] << " "
           << rays[i * 4][3] << " " << rays[i * 4][4] << " " << rays[i * 4][5] << "\n";
   }
-  void TearDown() override { fs::remove_all(dir); }
 
   // rtrace -I's first channel per sensor (the scene is grey); every value finite, exit 0.
   std::vector<double> run(const std::string& opts, unsigned seed = 1) {

@@ -5,48 +5,38 @@
 // transmits; a room lit only from outside stays black along its closed corners.
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
+#include "files.h"
+#include "run_program.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
-namespace fs = std::filesystem;
-
 namespace {
-
-fs::path temp(const std::string& name) {
-  return fs::temp_directory_path() / ("radcl-leak-" + std::to_string(::getpid()) + "-" + name);
-}
 
 // rtrace -h -I `opts` on scene text `scene` with meter lines `pts`: the first value per line.
 std::vector<double> meters(const std::string& opts, const std::string& scene,
                            const std::string& pts, const std::string& env = "") {
-  fs::path rad = temp("scene.rad"), in = temp("pts"), out = temp("out");
-  std::ofstream(rad) << scene;
-  std::ofstream(in) << pts;
-  std::string log;
-  int rc =
-      radcl::test::run_command(env + radcl::test::bin_dir() + "/rtrace -h -I -u- " + opts + " " +
-                                   rad.string() + " < " + in.string() + " > " + out.string(),
-                               &log);
-  EXPECT_EQ(rc, 0) << log;
+  const radcl::test::TempFolder dir("leak");
+  radcl::test::write_file(dir / "scene.rad", scene);
+  const radcl::test::ProgramRun r =
+      radcl::test::Program("rtrace").input(pts).in(dir.str()).env(env).run("-h -I -u- " + opts +
+                                                                           " scene.rad");
+  EXPECT_EQ(r.rc, 0) << r.err;
   std::vector<double> v;
-  std::ifstream f(out);
+  std::istringstream f(r.out);
   std::string line;
   while (std::getline(f, line)) {
     std::istringstream s(line);
-    double r = 0, g = 0, b = 0;
-    s >> r >> g >> b;
-    EXPECT_TRUE(std::isfinite(r) && std::isfinite(g) && std::isfinite(b)) << line;
-    v.push_back(r);
+    double red = 0, g = 0, b = 0;
+    s >> red >> g >> b;
+    EXPECT_TRUE(std::isfinite(red) && std::isfinite(g) && std::isfinite(b)) << line;
+    v.push_back(red);
   }
-  fs::remove(rad);
-  fs::remove(in);
-  fs::remove(out);
   return v;
 }
 

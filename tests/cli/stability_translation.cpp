@@ -14,7 +14,9 @@
 #include <unistd.h>
 #include <vector>
 
+#include "files.h"
 #include "reference_data.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
@@ -92,27 +94,16 @@ std::string transformed(const fs::path& file, const Xform& x) {
   return out.str();
 }
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-class StabilityTranslation : public ::testing::Test {
+class StabilityTranslation : public radcl::test::TempDir {
 protected:
-  fs::path dir;
-  void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl-translation-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-  }
-  void TearDown() override { fs::remove_all(dir); }
-
   // Writes the office transformed by x and its sensors; returns the scene file's name.
   std::string write_office(const Xform& x) {
     const fs::path src = radcl::test::data("scenes");
     std::string rad = x.name() + ".rad";
     std::ofstream f(dir / rad);
-    f << read_all(src / "office_mat.rad") << transformed(src / "office_geom.rad", x)
-      << transformed(src / "office_desk.rad", x) << read_all(src / "office_sky_clear.rad");
+    f << radcl::test::read_file(src / "office_mat.rad") << transformed(src / "office_geom.rad", x)
+      << transformed(src / "office_desk.rad", x)
+      << radcl::test::read_file(src / "office_sky_clear.rad");
     std::ofstream p(dir / (x.name() + ".pts"));
     for (const auto& s : radcl::test::read_rays(src / "office_grid.pts"))
       p << num(x.s * s[0] + x.t) << " " << num(x.s * s[1] + x.t) << " " << num(x.s * s[2] + x.t)

@@ -6,10 +6,9 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
+#include "files.h"
 #include "fuzz_target.h"
 #include "test_env.h"
 
@@ -30,13 +29,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::vector<std::string> target_names() {
   std::vector<std::string> names;
   for (const auto& [name, body] : registry())
@@ -56,7 +48,7 @@ TEST_P(FuzzRegression, KeptInputsDoNotCrash) {
   std::sort(files.begin(), files.end());
   for (const fs::path& f : files) {
     SCOPED_TRACE(f.string());
-    const std::string bytes = read_bytes(f);
+    const std::string bytes = radcl::test::read_file(f);
     EXPECT_NO_THROW(run_one(body, bytes));
   }
   // The trivial inputs too: nothing at all, one NUL, one newline.

@@ -5,14 +5,13 @@
 
 #include "radcl/image/depth.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 
 using namespace radcl::image;
 
 TEST(Depth, WritesRawFloatsAndResumes) {
-  const auto dir = std::filesystem::temp_directory_path() / "radcl_image_tests";
-  std::filesystem::create_directories(dir);
+  const radcl::test::TempFolder dir("depth");
   const std::string path = (dir / "z.dat").string();
-  std::filesystem::remove(path);
   const int w = 4;
   {
     DepthWriter z(path, w);

@@ -4,11 +4,11 @@
 
 #include <OpenImageIO/imageio.h>
 #include <array>
-#include <fstream>
 #include <iterator>
 #include <span>
 #include <sstream>
 
+#include "files.h"
 #include "radcl/image/picture.h"
 #include "radcl/image/scanline.h"
 #include "test_env.h"
@@ -86,11 +86,6 @@ const Reference kRefs[] = {
        {106, 39, {185, 188, 195, 129}}}}},
 };
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 class ReferencePicture : public ::testing::TestWithParam<Reference> {
 protected:
   std::string path() const { return radcl::test::data(std::string("results/") + GetParam().file); }
@@ -156,7 +151,7 @@ TEST_P(ReferencePicture, AgreesWithOpenImageIO) {
 }
 
 TEST_P(ReferencePicture, ReencodesByteForByte) {
-  const std::string bytes = slurp(path());
+  const std::string bytes = radcl::test::read_file(path());
   std::istringstream in(bytes);
   PictureReader reader(in, path());
   const auto data_start = static_cast<std::size_t>(in.tellg());

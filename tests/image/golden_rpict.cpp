@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "radcl/image/picture.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using radcl::test::run_command;
@@ -23,9 +23,8 @@ struct Rendered {
 // `seed` > 0: RADCL_SEED for -u+ renders.
 Rendered render(const std::string& args, const std::string& octree, const std::string& ref,
                 int seed = 0) {
-  fs::path out = fs::temp_directory_path() /
-                 ("radcl-rpict-" + std::to_string(::getpid()) + "-" + octree + ".hdr");
-  fs::remove(out);
+  const radcl::test::TempFolder tmp("rpict");
+  const fs::path out = tmp / (octree + ".hdr");
   std::string log;
   std::string env = seed > 0 ? "RADCL_SEED=" + std::to_string(seed) + " " : "";
   int rc = run_command("cd " + radcl::test::data("scenes") + " && " + env + radcl::test::bin_dir() +
@@ -34,7 +33,6 @@ Rendered render(const std::string& args, const std::string& octree, const std::s
   EXPECT_EQ(rc, 0) << log;
   Rendered r{radcl::image::read_picture(out.string()),
              radcl::image::read_picture(radcl::test::data("results/" + ref))};
-  fs::remove(out);
   return r;
 }
 

@@ -9,14 +9,14 @@
 #include "radcl/image/image_io.h"
 #include "radcl/image/picture.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 
 using namespace radcl::image;
 
 namespace {
 
 std::string temp_path(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "radcl_image_tests";
-  std::filesystem::create_directories(dir);
+  static const radcl::test::TempFolder dir("image_io"); // removed at exit
   return (dir / name).string();
 }
 

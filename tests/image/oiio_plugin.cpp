@@ -6,6 +6,7 @@
 #include <string>
 
 #include "reference_data.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
@@ -30,8 +31,7 @@ RpictRun rpict(const std::string& env, const std::string& out) {
 }
 
 fs::path temp(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / "radcl_oiio_plugin_tests";
-  fs::create_directories(d);
+  static const radcl::test::TempFolder d("oiio_plugin"); // removed at exit
   fs::remove(d / name);
   return d / name;
 }

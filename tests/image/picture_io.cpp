@@ -2,14 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iterator>
 #include <random>
 #include <sstream>
 
+#include "files.h"
 #include "radcl/image/picture.h"
 #include "radcl/image/scanline.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using namespace radcl::image;
@@ -32,19 +33,9 @@ std::vector<Rgbe> random_pixels(int n, unsigned seed) {
   return px;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 std::string temp_path(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "radcl_image_tests";
-  std::filesystem::create_directories(dir);
+  static const radcl::test::TempFolder dir("image_tests");
   return (dir / name).string();
-}
-
-void spew(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
 std::string minimal_header() {
@@ -242,7 +233,8 @@ TEST(Picture, ReadsBottomUpAndFlatPictures) {
 }
 
 TEST(Picture, TruncatedOrCorruptFilesAreFatal) {
-  const std::string good = slurp(radcl::test::data("results/materials_plain_view_ab0.hdr"));
+  const std::string good =
+      radcl::test::read_file(radcl::test::data("results/materials_plain_view_ab0.hdr"));
   const auto header_end = good.find("\n\n") + 2;
   const auto data_start = good.find('\n', header_end) + 1;
   expect_fatal([&] { read_string(""); }, "not a Radiance file");
@@ -288,7 +280,7 @@ TEST(Picture, HugeClaimWithLittleDataFailsAtOnce) {
 
 TEST(Picture, RecoverCountsCompleteScanlines) {
   const std::string ref = radcl::test::data("results/cornell_view.hdr");
-  const std::string good = slurp(ref);
+  const std::string good = radcl::test::read_file(ref);
   const Picture pic = read_picture(ref);
   const auto data_start = good.find('\n', good.find("\n\n") + 2) + 1;
   // Where each scanline ends in the file.
@@ -304,7 +296,7 @@ TEST(Picture, RecoverCountsCompleteScanlines) {
   const std::string path = temp_path("recover.hdr");
   for (int k : {0, 1, 17, 100, 255}) {
     const std::size_t cut = k == 0 ? data_start + 3 : ends[k - 1] + (k % 2 ? 5 : 0);
-    spew(path, good.substr(0, cut));
+    radcl::test::write_file(path, good.substr(0, cut));
     const Salvage s = salvage_picture(path);
     EXPECT_EQ(s.complete, k);
     EXPECT_EQ(s.resolution, pic.resolution);
@@ -312,10 +304,10 @@ TEST(Picture, RecoverCountsCompleteScanlines) {
     ASSERT_EQ(s.pixels.size(), std::size_t(k) * pic.width);
     EXPECT_TRUE(std::equal(s.pixels.begin(), s.pixels.end(), pic.pixels.begin()));
   }
-  spew(path, good);
+  radcl::test::write_file(path, good);
   EXPECT_EQ(salvage_picture(path).complete, pic.height);
   // Resuming: copy what was salvaged, then write the rest; the result is the original file.
-  spew(path, good.substr(0, ends[99] + 10));
+  radcl::test::write_file(path, good.substr(0, ends[99] + 10));
   const Salvage s = salvage_picture(path);
   std::ostringstream out;
   PictureWriter w(out, s.header, s.resolution);
@@ -325,7 +317,7 @@ TEST(Picture, RecoverCountsCompleteScanlines) {
   }
   EXPECT_TRUE(out.str() == good);
 
-  spew(path, "#?RADIANCE\n\n");
+  radcl::test::write_file(path, "#?RADIANCE\n\n");
   expect_fatal([&] { salvage_picture(path); }, "bad recover file");
   expect_fatal([] { salvage_picture("/nonexistent/r.hdr"); }, "cannot open recover file");
 }

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
+#include "files.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
+using radcl::test::read_file;
 using radcl::test::run_command;
 namespace fs = std::filesystem;
 
@@ -21,18 +23,12 @@ const char* kViews = "VIEW= -vp 0.45 0.05 0.5\n"
                      "rpict -vp 0.5 0.05 0.5 -vd 0.1 1 0\n"
                      "rpict -vp 0.55 0.05 0.45\n";
 
-class RpictSequence : public ::testing::Test {
+class RpictSequence : public radcl::test::TempDir {
 protected:
-  fs::path dir;
   void SetUp() override {
-    dir = fs::temp_directory_path() /
-          ("radcl-rpict-seq-" + std::to_string(::getpid()) + "-" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    TempDir::SetUp();
     std::ofstream(dir / "views") << kViews;
   }
-  void TearDown() override { fs::remove_all(dir); }
 
   int rpict(const std::string& args, std::string* log = nullptr) {
     std::string l;
@@ -47,13 +43,6 @@ protected:
     return (dir / b).string();
   }
 };
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 // The header lines (up to the empty line) and the rest (resolution and pixels).
 std::pair<std::string, std::string> split(const std::string& pic) {
@@ -84,13 +73,13 @@ TEST_F(RpictSequence, FramesFromViewLinesEqualSingleRenders) {
                           "-vp 0.55 0.05 0.45 -vd 0.1 1 0"};
   for (int n = 1; n <= 3; ++n) {
     ASSERT_TRUE(fs::exists(frame(n))) << n;
-    auto [head, data] = split(slurp(frame(n)));
+    auto [head, data] = split(read_file(frame(n)));
     EXPECT_EQ(head.rfind("#?RADIANCE\n", 0), 0u);
     EXPECT_EQ(line_of(head, "FRAME="), "FRAME=" + std::to_string(n));
     fs::path one = dir / ("single" + std::to_string(n) + ".hdr");
     ASSERT_EQ(rpict(kOpts + single[n - 1] + " -o " + one.string() + " cornell.oct", &log), 0)
         << log;
-    auto [head1, data1] = split(slurp(one.string()));
+    auto [head1, data1] = split(read_file(one.string()));
     EXPECT_EQ(line_of(head, "VIEW="), line_of(head1, "VIEW=")) << n;
     EXPECT_EQ(line_of(head1, "FRAME="), "");
     EXPECT_FALSE(data.empty());
@@ -107,10 +96,11 @@ TEST_F(RpictSequence, ExistingFramesAreSkippedNeverOverwritten) {
                   &log),
             0)
       << log;
-  EXPECT_EQ(slurp(frame(2)), "keep me");
+  EXPECT_EQ(read_file(frame(2)), "keep me");
   ASSERT_TRUE(fs::exists(frame(3)));
   // Frame 3 still gets the view as changed by frame 2's line.
-  EXPECT_NE(slurp(frame(3)).find("VIEW= -vtv -vp 0.55 0.05 0.45 -vd 0.1 1 0 "), std::string::npos);
+  EXPECT_NE(read_file(frame(3)).find("VIEW= -vtv -vp 0.55 0.05 0.45 -vd 0.1 1 0 "),
+            std::string::npos);
 }
 
 TEST_F(RpictSequence, StdoutSequenceSharesTheLeadingHeaderLines) {
@@ -118,7 +108,7 @@ TEST_F(RpictSequence, StdoutSequenceSharesTheLeadingHeaderLines) {
   std::string log;
   ASSERT_EQ(rpict(kOpts + "-S 7 cornell.oct < " + (dir / "views").string() + " > " + out, &log), 0)
       << log;
-  std::string all = slurp(out);
+  std::string all = read_file(out);
   EXPECT_EQ(all.rfind("#?RADIANCE\n", 0), 0u);
   // One id line, one command line; FRAME=7, 8, 9 in order.
   EXPECT_EQ(all.find("#?RADIANCE", 1), std::string::npos);
@@ -162,7 +152,7 @@ TEST_F(RpictSequence, MotionBlurBlendsWithThePreviousView) {
                     &log),
               0)
         << log;
-    return split(slurp((dir / sub / "f2.hdr").string())).second;
+    return split(read_file((dir / sub / "f2.hdr").string())).second;
   };
   std::string none = render("", "none"), zero = render("-pm 0 ", "zero"),
               blur = render("-pm 1 ", "blur"), again = render("-pm 1 ", "again");
@@ -177,8 +167,8 @@ TEST_F(RpictSequence, OctreeFromStandardInput) {
   std::string log;
   ASSERT_EQ(rpict(kOpts + "-o " + a.string() + " cornell.oct", &log), 0) << log;
   ASSERT_EQ(rpict(kOpts + "-o " + b.string() + " < cornell.oct", &log), 0) << log;
-  auto [ha, da] = split(slurp(a.string()));
-  auto [hb, db] = split(slurp(b.string()));
+  auto [ha, da] = split(read_file(a.string()));
+  auto [hb, db] = split(read_file(b.string()));
   EXPECT_FALSE(da.empty());
   EXPECT_EQ(da, db);
   EXPECT_EQ(line_of(hb, "oconv"), line_of(ha, "oconv")); // its header is still copied
@@ -216,9 +206,9 @@ TEST_F(RpictSequence, PersistentServerRendersLaterSequences) {
                   &log),
             0)
       << log;
-  std::string attached = slurp((dir / "attached.hdr").string());
+  std::string attached = read_file((dir / "attached.hdr").string());
   EXPECT_NE(attached.find("FRAME=3\n"), std::string::npos);
-  EXPECT_EQ(without_dates(attached), without_dates(slurp((dir / "plain.hdr").string())));
+  EXPECT_EQ(without_dates(attached), without_dates(read_file((dir / "plain.hdr").string())));
   fs::remove(pf); // ends the server
 }
 

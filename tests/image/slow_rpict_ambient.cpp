@@ -4,8 +4,8 @@
 // default) would end the third bounce that Radiance's cached run keeps: these runs use
 // -lw 1e-4. The mean over the picture needs no more than 64 x 64 pixels (the Cornell runs at
 // 128 x 128 and 96 x 96 were a fifth of the suite's time on two cores). -as 0: super-sampling
-// only moves noise around (tests/render/pipeline/ambient_supersampling.cpp checks it) and would double
-// these runs.
+// only moves noise around (tests/render/pipeline/ambient_supersampling.cpp checks it) and would
+// double these runs.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -18,6 +18,7 @@
 #include "radcl/image/depth.h"
 #include "radcl/image/image_io.h"
 #include "radcl/image/picture.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using radcl::test::run_command;
@@ -26,7 +27,8 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path temp(const std::string& name) {
-  return fs::temp_directory_path() / ("radcl-" + std::to_string(::getpid()) + "-" + name);
+  static const radcl::test::TempFolder dir("rpict_ambient"); // removed at exit
+  return dir / name;
 }
 
 void rpict(const std::string& args, const std::string& octree) {

@@ -1,6 +1,7 @@
 // Radiance's argument conventions: number syntax, @file/$VAR expansion, boolean suffixes.
 #include "radcl/options/args.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -72,9 +73,8 @@ TEST(Args, ValuesOk) {
 }
 
 TEST(Args, ExpandFileAndEnvironment) {
-  char dir[] = "/tmp/radcl_opt_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  std::string f1 = std::string(dir) + "/a.opt", f2 = std::string(dir) + "/b.opt";
+  const radcl::test::TempFolder dir("opt");
+  std::string f1 = (dir / "a.opt").string(), f2 = (dir / "b.opt").string();
   std::ofstream(f1) << "-ab 2\n  @" << f2 << "\t-aa .1\n";
   std::ofstream(f2) << "-ad 64 $RADCL_OPT_TEST";
   setenv("RADCL_OPT_TEST", " -as  8 ", 1);
@@ -110,17 +110,13 @@ TEST(Args, ExpandFileAndEnvironment) {
   ArgList empty({"rtrace", "@" + f1, "x.oct"});
   empty.expand(1);
   EXPECT_EQ(empty.words(), (std::vector<std::string>{"rtrace", "x.oct"}));
-  std::remove(f1.c_str());
-  std::remove(f2.c_str());
-  rmdir(dir);
 }
 
 // Words are split at white space as Radiance's wordfile() does: quotes stay in the words, any
 // number of words and lines expand, and a file that names itself stops with an error.
 TEST(Args, FileExpansionLimits) {
-  char dir[] = "/tmp/radcl_args_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  const std::string many = std::string(dir) + "/many.opt", self = std::string(dir) + "/self.opt";
+  const radcl::test::TempFolder dir("args");
+  const std::string many = (dir / "many.opt").string(), self = (dir / "self.opt").string();
   {
     std::ofstream f(many);
     f << "-av \"0.1 '0.2\"\n";
@@ -143,7 +139,4 @@ TEST(Args, FileExpansionLimits) {
   } catch (const radcl::FatalError& e) {
     EXPECT_NE(std::string(e.what()).find("nested expansions"), std::string::npos) << e.what();
   }
-  std::remove(many.c_str());
-  std::remove(self.c_str());
-  rmdir(dir);
 }

@@ -3,13 +3,14 @@
 // what the formatter makes of the same values.
 #include "radcl/options/ray_io.h"
 
+#include "files.h"
 #include "test_env.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
-#include <fstream>
+#include <filesystem>
 #include <gtest/gtest.h>
 #include <sstream>
 
@@ -17,12 +18,11 @@ using namespace radcl::options;
 
 namespace {
 
-std::string slurp(const std::string& name) {
-  std::ifstream in(radcl::test::data("results/" + name), std::ios::binary);
-  EXPECT_TRUE(in) << name;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+// A stored Radiance output (tests/data/results), which must be there.
+std::string stored(const std::string& name) {
+  const std::string path = radcl::test::data("results/" + name);
+  EXPECT_TRUE(std::filesystem::exists(path)) << name;
+  return radcl::test::read_file(path);
 }
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -117,7 +117,7 @@ RayOutput parse_record(const std::string& line, std::string_view letters) {
 
 std::vector<RayOutput> parse_file(const std::string& name, std::string_view letters) {
   std::vector<RayOutput> rays;
-  for (const std::string& l : lines_of(slurp(name)))
+  for (const std::string& l : lines_of(stored(name)))
     rays.push_back(parse_record(l, letters));
   return rays;
 }
@@ -151,7 +151,7 @@ TEST(GoldenRayOutput, AsciiRecordsRoundTripByteForByte) {
   for (const TextCase& c : cases) {
     std::vector<RayOutput> rays = parse_file(c.file, c.letters);
     EXPECT_EQ(rays.size(), 160u) << c.file;
-    EXPECT_EQ(write_all(rays, c.letters, 'a'), slurp(c.file)) << c.file;
+    EXPECT_EQ(write_all(rays, c.letters, 'a'), stored(c.file)) << c.file;
   }
 }
 
@@ -210,13 +210,13 @@ TEST(GoldenRayOutput, UnmirroredIsValueMinusMirrored) {
 // significant digits are enough to decide every byte here).
 TEST(GoldenRayOutput, RgbeMatchesRadiance) {
   std::vector<RayOutput> rays = parse_file("materials_plain_rays_v.txt", "v");
-  const std::string ref = slurp("materials_plain_rays_fac.bin");
+  const std::string ref = stored("materials_plain_rays_fac.bin");
   ASSERT_EQ(ref.size(), 160u * 4);
   std::string out = write_all(rays, "v", 'c');
   EXPECT_EQ(out, ref);
   EXPECT_EQ(to_rgbe(0, 0, 0), (std::array<unsigned char, 4>{0, 0, 0, 0}));
   EXPECT_EQ(to_rgbe(1, 0.5, -1), (std::array<unsigned char, 4>{128, 64, 0, 129}));
-  EXPECT_EQ(slurp("materials_rays_fac.bin").size(), 160u * 4);
+  EXPECT_EQ(stored("materials_rays_fac.bin").size(), 160u * 4);
 }
 
 // -ff/-fd: Radiance made these from the binary camera rays (materials_rays.f32/.f64), which
@@ -224,8 +224,8 @@ TEST(GoldenRayOutput, RgbeMatchesRadiance) {
 // rest agree to the text's precision. The bytes of the formatter are checked by round trip.
 TEST(GoldenRayOutput, FloatAndDoubleMatchRadiance) {
   std::vector<RayOutput> rays = parse_file("materials_plain_rays_v.txt", "v");
-  const std::string ref_f = slurp("materials_plain_rays_ff.f32");
-  const std::string ref_d = slurp("materials_plain_rays_fd.f64");
+  const std::string ref_f = stored("materials_plain_rays_ff.f32");
+  const std::string ref_d = stored("materials_plain_rays_fd.f64");
   std::string out_f = write_all(rays, "v", 'f');
   std::string out_d = write_all(rays, "v", 'd');
   ASSERT_EQ(out_f.size(), ref_f.size());
@@ -273,7 +273,7 @@ TEST(GoldenRayOutput, HeaderMatchesRadiance) {
   h.time = timegm(&tm);
   h.ncomp = parse_output_spec("v").ncomp;
   h.out_format = 'a';
-  std::string ref = slurp("materials_plain_rays_header.txt");
+  std::string ref = stored("materials_plain_rays_header.txt");
   std::string expected = ref.substr(0, ref.find("\n\n") + 2);
   EXPECT_EQ(format_rtrace_header(h), expected);
   // Records follow the header.

@@ -1,16 +1,13 @@
 // The -o letters: counts, cast-only detection, trace mode and Radiance's errors and warnings.
 #include "radcl/options/ray_io.h"
 #include "radcl/util/error.h"
+#include "warnings.h"
 
 #include <gtest/gtest.h>
 
 using namespace radcl::options;
 
 namespace {
-std::vector<std::string> g_warnings;
-void capture(const std::string& m) {
-  g_warnings.push_back(m);
-}
 std::string error_of(const char* spec) {
   try {
     parse_output_spec(spec);
@@ -62,25 +59,25 @@ TEST(OutputSpec, Errors) {
 }
 
 TEST(OutputSpec, ChecksAgainstOptions) {
-  radcl::set_warning_sink(capture);
+  radcl::test::CapturedWarnings warnings;
   RenderOptions r = RenderOptions::rtrace_defaults();
-  g_warnings.clear();
   check_output_spec("v", parse_output_spec("v"), r, false);
-  EXPECT_TRUE(g_warnings.empty());
+  EXPECT_TRUE(warnings.list().empty());
   check_output_spec("VW", parse_output_spec("VW"), r, false);
-  EXPECT_EQ(g_warnings, (std::vector<std::string>{"-oVW options require trace mode",
-                                                  "-oVW options require trace mode"}));
-  g_warnings.clear();
+  EXPECT_EQ(warnings.list(), (std::vector<std::string>{"-oVW options require trace mode",
+                                                       "-oVW options require trace mode"}));
+  warnings.list().clear();
   r.ambient_bounces = 1;
   check_output_spec("vtV", parse_output_spec("vtV"), r, false);
-  EXPECT_EQ(g_warnings, (std::vector<std::string>{"-otV accuracy depends on -aa 0 -as 0"}));
-  g_warnings.clear();
+  EXPECT_EQ(warnings.list(), (std::vector<std::string>{"-otV accuracy depends on -aa 0 -as 0"}));
+  warnings.list().clear();
   r.ambient_accuracy = 0;
   r.ambient_supersamples = 0;
   check_output_spec("vtVW", parse_output_spec("vtVW"), r, false);
-  EXPECT_TRUE(g_warnings.empty());
+  EXPECT_TRUE(warnings.list().empty());
   check_output_spec("vr", parse_output_spec("vr"), r, true);
-  EXPECT_EQ(g_warnings, (std::vector<std::string>{"-orRxX options incompatible with -I+ and -i+"}));
+  EXPECT_EQ(warnings.list(),
+            (std::vector<std::string>{"-orRxX options incompatible with -I+ and -i+"}));
   r.irradiance = true;
   try {
     check_output_spec("od", parse_output_spec("od"), r, false);
@@ -88,7 +85,6 @@ TEST(OutputSpec, ChecksAgainstOptions) {
   } catch (const radcl::FatalError& e) {
     EXPECT_STREQ(e.what(), "-I+ and -i+ options require some value output");
   }
-  radcl::set_warning_sink(nullptr);
 }
 
 TEST(OutputSpec, ColourFormat) {

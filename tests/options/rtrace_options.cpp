@@ -2,8 +2,9 @@
 // the -defaults listing of Radiance 5.4a (docs/radiance/cli-rtrace-rpict.md §3.10).
 #include "radcl/options/rtrace_options.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
+#include "warnings.h"
 
-#include <cstdio>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -60,11 +61,6 @@ std::string error_of(std::vector<std::string> args) {
     return e.what();
   }
   return "(no error)";
-}
-
-std::vector<std::string> g_warnings;
-void capture(const std::string& m) {
-  g_warnings.push_back(m);
 }
 
 } // namespace
@@ -184,9 +180,8 @@ TEST(RtraceOptions, EveryRtraceOption) {
 }
 
 TEST(RtraceOptions, ModifierLists) {
-  char dir[] = "/tmp/radcl_opt_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  std::string f = std::string(dir) + "/names.txt";
+  const radcl::test::TempFolder dir("opt");
+  std::string f = (dir / "names.txt").string();
   std::ofstream(f) << "glass\n  window \tdoor\n";
   RtraceCommand c = parse({"-ae", "a", "-ae", "b", "x"});
   EXPECT_EQ(c.opt.render.ambient_list.kind, ModifierList::Kind::Exclude);
@@ -216,18 +211,15 @@ TEST(RtraceOptions, ModifierLists) {
         return n == "names.txt" ? f : std::string();
       });
   EXPECT_EQ(found.opt.render.ambient_list.names.size(), 3u);
-  std::remove(f.c_str());
-  rmdir(dir);
 }
 
 TEST(RtraceOptions, PhotonMaps) {
-  radcl::set_warning_sink(capture);
-  g_warnings.clear();
+  radcl::test::CapturedWarnings warnings;
   RtraceCommand c = parse({"-ap", "g.pm", "x"});
   ASSERT_EQ(c.opt.render.photon_maps.size(), 1u);
   EXPECT_EQ(c.opt.render.photon_maps[0].min_gather, 40);
   EXPECT_EQ(c.opt.render.ambient_bounces, 1); // a photon map implies -ab 1
-  EXPECT_EQ(g_warnings,
+  EXPECT_EQ(warnings.list(),
             (std::vector<std::string>{"missing photon lookup bandwidth, defaulting to 40"}));
   c = parse({"-ab", "3", "-ap", "g.pm", "50", "-ap", "c.pm", "20", "80", "x"});
   ASSERT_EQ(c.opt.render.photon_maps.size(), 2u);
@@ -240,7 +232,6 @@ TEST(RtraceOptions, PhotonMaps) {
   EXPECT_EQ(error_of({"-ap", "g.pm", "0", "x"}), "command line error at '-ap'");
   EXPECT_EQ(error_of({"-am", "0", "x"}), "invalid max photon search radius");
   EXPECT_EQ(error_of({"-am", "x"}), "invalid max photon search radius");
-  radcl::set_warning_sink(nullptr);
 }
 
 TEST(RtraceOptions, Errors) {
@@ -284,9 +275,8 @@ TEST(RtraceOptions, ParsingStopsAtFirstOperand) {
 }
 
 TEST(RtraceOptions, ArgumentFileExpansion) {
-  char dir[] = "/tmp/radcl_opt_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  std::string f = std::string(dir) + "/opts";
+  const radcl::test::TempFolder dir("opt");
+  std::string f = (dir / "opts").string();
   std::ofstream(f) << "-ab 2 -ad 256\n-aa 0.2\n";
   setenv("RADCL_OPT_OCT", "scene.oct", 1);
   RtraceCommand c = parse({"@" + f, "-as", "32", "$RADCL_OPT_OCT"});
@@ -297,6 +287,4 @@ TEST(RtraceOptions, ArgumentFileExpansion) {
   EXPECT_EQ(rtrace_octree(c), "scene.oct"); // the operand is expanded too
   EXPECT_EQ(c.args, (std::vector<std::string>{"rtrace", "-ab", "2", "-ad", "256", "-aa", "0.2",
                                               "-as", "32", "scene.oct"}));
-  std::remove(f.c_str());
-  rmdir(dir);
 }

@@ -6,15 +6,15 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
+#include "files.h"
 #include "radcl/scene/loader.h"
 #include "radcl/scene/mesh.h"
 #include "radcl/scene/octree_reader.h"
 #include "radcl/scene/portable_io.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace radcl::scene {
@@ -29,13 +29,6 @@ fs::path data_root() {
 
 fs::path catalogue_dir() {
   return data_root() / "scene" / "bad_octree";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
 }
 
 class InDir {
@@ -111,9 +104,9 @@ std::string frozen_instance(const std::string& name, const std::string& octree) 
 
 std::map<std::string, std::string> make_catalogue() {
   const fs::path scenes = data_root() / "scenes";
-  const std::string chair = slurp(scenes / "chair.oct");   // frozen, 37 objects
-  const std::string sphere = slurp(scenes / "sphere.oct"); // names sphere.rad, 4 objects
-  const std::string octa = slurp(scenes / "octa.rtm");
+  const std::string chair = test::read_file(scenes / "chair.oct");   // frozen, 37 objects
+  const std::string sphere = test::read_file(scenes / "sphere.oct"); // names sphere.rad, 4 objects
+  const std::string octa = test::read_file(scenes / "octa.rtm");
   const Layout c = layout(chair);
   std::map<std::string, std::string> out;
 
@@ -177,8 +170,8 @@ TEST(BadOctreeCatalogue, FilesMatchGenerator) {
   const bool write = std::getenv("RADCL_WRITE_BAD_OCTREES") != nullptr;
   for (const auto& [name, bytes] : cat) {
     const fs::path p = catalogue_dir() / name;
-    if (write) std::ofstream(p, std::ios::binary) << bytes;
-    EXPECT_EQ(slurp(p), bytes) << name << " differs from what make_catalogue() makes";
+    if (write) test::write_file(p, bytes);
+    EXPECT_EQ(test::read_file(p), bytes) << name << " differs from what make_catalogue() makes";
   }
 }
 
@@ -227,21 +220,22 @@ TEST(BadOctree, Messages) {
 }
 
 TEST(BadOctree, EveryTruncationOfAFrozenOctreeFails) {
-  const std::string chair = slurp(data_root() / "scenes" / "chair.oct");
-  const fs::path p = fs::temp_directory_path() / "radcl_bad_octree_cut.oct";
+  const std::string chair = test::read_file(data_root() / "scenes" / "chair.oct");
+  const test::TempFolder tmp("bad_octree");
+  const fs::path p = tmp / "cut.oct";
   for (std::size_t n = 0; n < chair.size(); n += 7) {
-    std::ofstream(p, std::ios::binary) << chair.substr(0, n);
+    test::write_file(p, chair.substr(0, n));
     const std::string e = octree_error(p.string());
     EXPECT_TRUE(e.find("truncated octree") != std::string::npos ||
                 e.find("not an octree") != std::string::npos)
         << n << ": " << e;
   }
-  fs::remove(p);
 }
 
 TEST(BadOctree, RandomCorruptionNeverCrashes) {
-  const std::string chair = slurp(data_root() / "scenes" / "chair.oct");
-  const fs::path p = fs::temp_directory_path() / "radcl_bad_octree_flip.oct";
+  const std::string chair = test::read_file(data_root() / "scenes" / "chair.oct");
+  const test::TempFolder tmp("bad_octree");
+  const fs::path p = tmp / "flip.oct";
   std::uint32_t state = 12345;
   auto next = [&] { return state = state * 1664525u + 1013904223u; };
   for (int i = 0; i < 300; ++i) {
@@ -249,13 +243,12 @@ TEST(BadOctree, RandomCorruptionNeverCrashes) {
     const std::size_t body = s.find("\n\n") + 2;
     for (int k = 0; k < 3; ++k)
       s[body + next() % (s.size() - body)] = static_cast<char>(next() >> 24);
-    std::ofstream(p, std::ios::binary) << s;
+    test::write_file(p, s);
     try {
       read_octree(p.string()); // a flipped coordinate can still be a valid octree
     } catch (const FatalError&) {
     }
   }
-  fs::remove(p);
 }
 
 TEST(BadInstances, RecursionIsFatal) {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "files.h"
 #include "radcl/scene/rad_reader.h"
 #include "radcl/util/error.h"
 #include "test_env.h"
@@ -128,10 +129,7 @@ TEST_F(BadRadInput, CatalogueCoversEveryFile) {
 
 // Every prefix of a valid scene is either a valid scene or a FatalError, never a crash.
 TEST_F(BadRadInput, TruncationsOfAValidSceneFailCleanly) {
-  std::ifstream in(radcl::test::data("scenes/materials.rad"), std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = radcl::test::read_file(radcl::test::data("scenes/materials.rad"));
   for (std::size_t n = 0; n < text.size(); n += 7) {
     SceneDescription scene;
     std::istringstream part(text.substr(0, n));

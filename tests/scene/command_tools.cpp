@@ -2,19 +2,19 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 
+#include "temp_dir.h"
 #include "test_env.h"
 
 using radcl::test::run_command;
 
 TEST(CommandTools, GenskyRunsWithoutRadianceOnPath) {
-  std::string file = "/tmp/radcl_command_tools_" + std::to_string(::getpid()) + ".rad";
+  const radcl::test::TempFolder dir("command_tools");
+  const std::string file = (dir / "sky.rad").string();
   std::ofstream(file) << "!gensky 3 21 12 +s\n";
   std::string out;
   int rc = run_command(
       "env PATH=/usr/bin:/bin " + radcl::test::bin_dir() + "/radcl scene --list " + file, &out);
-  std::remove(file.c_str());
   EXPECT_EQ(rc, 0) << out;
   EXPECT_NE(out.find("source\tsun\tsolar"), std::string::npos) << out;
   EXPECT_NE(out.find("brightfunc\tskyfunc"), std::string::npos) << out;

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace radcl::scene {
@@ -85,12 +86,12 @@ TEST(Loader, FurnishedFromRadFiles) {
 
 TEST(Loader, OctreeDetectedByHeaderWithoutSuffix) {
   InDir here(scenes_dir());
-  const fs::path copy = fs::temp_directory_path() / "radcl_loader_sphere_octree";
+  const test::TempFolder tmp("loader");
+  const fs::path copy = tmp / "sphere_octree";
   fs::copy_file("sphere.oct", copy, fs::copy_options::overwrite_existing);
   const LoadedScene s = load_scene({copy.string()});
   EXPECT_EQ(s.main.objects.size(), 4u);
   EXPECT_FALSE(s.main.header.empty());
-  fs::remove(copy);
 }
 
 TEST(Loader, InputErrors) {
@@ -107,7 +108,8 @@ TEST(Loader, InputErrors) {
 }
 
 TEST(Loader, MissingInstanceOctree) {
-  const fs::path rad = fs::temp_directory_path() / "radcl_loader_missing.rad";
+  const test::TempFolder tmp("loader");
+  const fs::path rad = tmp / "missing.rad";
   std::ofstream(rad) << "void instance x 1 /nonexistent/none.oct 0 0\n";
   try {
     load_scene({rad.string()});
@@ -115,7 +117,6 @@ TEST(Loader, MissingInstanceOctree) {
   } catch (const FatalError& e) {
     EXPECT_STREQ(e.what(), "cannot find octree file \"/nonexistent/none.oct\"");
   }
-  fs::remove(rad);
 }
 
 } // namespace

@@ -13,6 +13,7 @@
 
 #include "radcl/scene/portable_io.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace radcl::scene {
@@ -193,7 +194,8 @@ std::string mesh_bytes(const MeshSpec& spec) {
 }
 
 fs::path write_temp(const std::string& name, const std::string& contents) {
-  fs::path p = fs::temp_directory_path() / ("radcl_mesh_reader_" + name);
+  static const test::TempFolder dir("mesh_reader"); // removed at exit
+  fs::path p = dir / name;
   std::ofstream(p, std::ios::binary) << contents;
   return p;
 }

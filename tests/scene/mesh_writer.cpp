@@ -14,9 +14,11 @@
 #include <map>
 #include <sstream>
 
+#include "files.h"
 #include "radcl/scene/octree_reader.h"
 #include "radcl/scene/portable_io.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace radcl::scene {
@@ -28,13 +30,6 @@ using V3 = std::array<double, 3>;
 std::string data(const std::string& name) {
   if (std::getenv("RADCL_TEST_DATA")) return test::data(name);
   return (fs::path(__FILE__).parent_path().parent_path() / "data" / name).string();
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
 }
 
 // teapot_like.obj as obj2mesh sees it: each vertex has one normal and one uv.
@@ -85,14 +80,10 @@ TriangleMesh mesh_from_obj(const std::string& path) {
 
 TriangleMesh round_trip(const TriangleMesh& m, MeshWriteInfo* info,
                         const MeshWriteOptions& opt = {}) {
-  static int n = 0;
-  const fs::path p =
-      fs::temp_directory_path() /
-      ("radcl_mesh_writer_" + std::to_string(::getpid()) + "_" + std::to_string(n++) + ".rtm");
+  const radcl::test::TempFolder tmp("mesh_writer");
+  const fs::path p = tmp / "m.rtm";
   *info = write_mesh(m, p.string(), opt);
-  TriangleMesh r = read_mesh(p.string());
-  fs::remove(p);
-  return r;
+  return read_mesh(p.string());
 }
 
 // Every triangle read back matches its source (any rotation of its corners, as joiners
@@ -185,7 +176,7 @@ TEST(MeshWriter, ReproducesObj2meshBytes) {
   EXPECT_EQ(info.patches, 1u);
   // Byte for byte, except that TriangleMesh keeps uv in float: obj2mesh encoded the .obj's
   // double 0.2, so one uv code may differ in its last bits.
-  const std::string ref = slurp(data("scenes/octa.rtm"));
+  const std::string ref = radcl::test::read_file(data("scenes/octa.rtm"));
   ASSERT_EQ(bytes.size(), ref.size());
   std::vector<std::size_t> diff;
   for (std::size_t i = 0; i < ref.size(); ++i)

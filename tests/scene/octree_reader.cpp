@@ -11,6 +11,7 @@
 
 #include "radcl/scene/portable_io.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace radcl::scene {
@@ -54,7 +55,8 @@ std::string hex(const std::string& s) {
 }
 
 fs::path temp_file(const std::string& name, const std::string& contents) {
-  fs::path p = fs::temp_directory_path() / ("radcl_octree_reader_" + name);
+  static const test::TempFolder dir("octree_reader"); // removed at exit
+  fs::path p = dir / name;
   std::ofstream(p, std::ios::binary) << contents;
   return p;
 }

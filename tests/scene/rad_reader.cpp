@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 #include "test_env.h"
+#include "warnings.h"
 
 namespace fs = std::filesystem;
 using radcl::FatalError;
@@ -19,18 +21,9 @@ using namespace radcl::scene;
 
 namespace {
 
-std::vector<std::string> g_warnings;
-void capture(const std::string& msg) {
-  g_warnings.push_back(msg);
-}
-
 class RadReader : public ::testing::Test {
 protected:
-  void SetUp() override {
-    g_warnings.clear();
-    radcl::set_warning_sink(capture);
-  }
-  void TearDown() override { radcl::set_warning_sink(nullptr); }
+  radcl::test::CapturedWarnings warnings;
 
   SceneDescription read(const std::string& text, const std::string& name = "t.rad") {
     SceneDescription s;
@@ -51,22 +44,16 @@ protected:
 // A scratch directory that is the current directory while it lives (for !commands).
 class ScratchDir {
 public:
-  ScratchDir() : old_(fs::current_path()) {
-    dir_ = fs::temp_directory_path() / ("radcl_scene_test_" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-    fs::current_path(dir_);
-  }
-  ~ScratchDir() {
-    fs::current_path(old_);
-    fs::remove_all(dir_);
-  }
+  ScratchDir() : old_(fs::current_path()) { fs::current_path(dir_.path()); }
+  ~ScratchDir() { fs::current_path(old_); } // before dir_ goes
   void write(const std::string& name, const std::string& text) const {
     std::ofstream(dir_ / name) << text;
   }
   fs::path path(const std::string& name) const { return dir_ / name; }
 
 private:
-  fs::path old_, dir_;
+  fs::path old_;
+  radcl::test::TempFolder dir_{"scene_test"};
 };
 
 } // namespace
@@ -87,7 +74,7 @@ TEST_F(RadReader, OnePrimitive) {
   EXPECT_EQ(s.find_modifier("red"), 0);
   EXPECT_EQ(s.find_modifier("void"), kVoid);
   EXPECT_EQ(s.find_modifier("nothing"), kVoid);
-  EXPECT_TRUE(g_warnings.empty());
+  EXPECT_TRUE(warnings.list().empty());
 }
 
 TEST_F(RadReader, LineBreaksAndWhiteSpaceAreNotSignificant) {
@@ -330,11 +317,11 @@ TEST_F(RadReader, LongWordsAndCommentLines) {
 
 TEST_F(RadReader, EmptyInputWarns) {
   read("# nothing here\n\n", "e.rad");
-  ASSERT_EQ(g_warnings.size(), 1u);
-  EXPECT_EQ(g_warnings[0], "(e.rad): empty file");
-  g_warnings.clear();
+  ASSERT_EQ(warnings.list().size(), 1u);
+  EXPECT_EQ(warnings.list()[0], "(e.rad): empty file");
+  warnings.list().clear();
   read("", "f.rad");
-  EXPECT_EQ(g_warnings, (std::vector<std::string>{"(f.rad): empty file"}));
+  EXPECT_EQ(warnings.list(), (std::vector<std::string>{"(f.rad): empty file"}));
 }
 
 TEST_F(RadReader, Commands) {
@@ -359,7 +346,7 @@ TEST_F(RadReader, Commands) {
   EXPECT_EQ(s.files[s.objects[2].file], "!echo void plastic \\\n continued 0 0 5 1 1 1 0 0");
   EXPECT_EQ(s.files[s.objects[3].file], "!echo void glow nested 0 0 4 1 1 1 0");
   EXPECT_EQ(s.objects[4].line, 7);
-  EXPECT_EQ(g_warnings, (std::vector<std::string>{"(!true): empty file"}));
+  EXPECT_EQ(warnings.list(), (std::vector<std::string>{"(!true): empty file"}));
 
   // A name starting with '!' is itself a command.
   SceneDescription t;
@@ -534,7 +521,7 @@ TEST_F(RadReader, ReferenceScenesLoad) {
       EXPECT_TRUE(is_modifier(s.objects[m].type));
     }
   }
-  EXPECT_TRUE(g_warnings.empty());
+  EXPECT_TRUE(warnings.list().empty());
 }
 
 TEST_F(RadReader, ReferenceSceneDetails) {

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
@@ -42,7 +43,6 @@ class RayPath : public ::testing::Test {
 protected:
   void SetUp() override {
     old_ = fs::current_path();
-    root_ = fs::temp_directory_path() / ("radcl_raypath_" + std::to_string(getpid()));
     fs::create_directories(root_ / "a");
     fs::create_directories(root_ / "b");
     fs::create_directories(root_ / "cwd");
@@ -52,14 +52,12 @@ protected:
     touch("cwd/here.cal");
     fs::current_path(root_ / "cwd");
   }
-  void TearDown() override {
-    fs::current_path(old_);
-    fs::remove_all(root_);
-  }
+  void TearDown() override { fs::current_path(old_); }
   void touch(const std::string& rel) { std::ofstream(root_ / rel) << "x\n"; }
   std::string dir(const std::string& rel) const { return (root_ / rel).string(); }
 
-  fs::path old_, root_;
+  fs::path old_;
+  radcl::test::TempFolder root_{"raypath"};
 };
 
 } // namespace

@@ -1,15 +1,18 @@
 // gensky and gendaylit against Radiance 5.4a: every command line of tests/data/skies/cases.tsv
 // runs through the built executable (found on PATH, so that the command echoed in the first
 // comment line reads as in Radiance's output) and stdout and stderr must match byte for byte.
+#include "files.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
+
+using radcl::test::read_file;
 
 namespace {
 
@@ -28,18 +31,11 @@ std::vector<Case> load_cases() {
   return cases;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str(); // empty when the file does not exist (no stderr expected)
-}
-
 TEST(GoldenSkies, AllReferenceCasesMatchExactly) {
   const std::vector<Case> cases = load_cases();
   ASSERT_EQ(cases.size(), 41u);
-  const std::string err_file =
-      ::testing::TempDir() + "/golden_skies_" + std::to_string(getpid()) + ".err";
+  const radcl::test::TempFolder tmp("golden_skies");
+  const std::string err_file = (tmp / "err").string();
   int exact = 0;
   for (const Case& c : cases) {
     SCOPED_TRACE(c.id + ": " + c.command);
@@ -48,14 +44,13 @@ TEST(GoldenSkies, AllReferenceCasesMatchExactly) {
                                                 c.command + " 2>'" + err_file + "' )",
                                             &out);
     EXPECT_EQ(rc, 0);
-    const std::string want_out = slurp(radcl::test::data("skies/" + c.id + ".rad"));
-    const std::string want_err = slurp(radcl::test::data("skies/" + c.id + ".err"));
-    const std::string err = slurp(err_file);
+    const std::string want_out = read_file(radcl::test::data("skies/" + c.id + ".rad"));
+    const std::string want_err = read_file(radcl::test::data("skies/" + c.id + ".err"));
+    const std::string err = read_file(err_file);
     EXPECT_EQ(out, want_out);
     EXPECT_EQ(err, want_err);
     exact += out == want_out && err == want_err;
   }
-  std::remove(err_file.c_str());
   RecordProperty("exact_matches", exact);
   EXPECT_EQ(exact, 41);
 }

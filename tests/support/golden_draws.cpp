@@ -3,9 +3,9 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <unistd.h>
 
 #include "reference_data.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace radcl::test {
@@ -43,17 +43,15 @@ DrawComparison default_grid_draws(const std::string& options, const std::string&
   for (const auto& v : read_rgb(data("results/" + conv_file)))
     conv.push_back(lum(v));
   std::vector<double> ours, theirs;
-  namespace fs = std::filesystem;
+  const TempFolder tmp("draws");
   for (int seed = 1; seed <= seeds; ++seed) {
-    fs::path out = fs::temp_directory_path() /
-                   ("radcl-draws-" + std::to_string(::getpid()) + "-" + std::to_string(seed));
+    const std::filesystem::path out = tmp / std::to_string(seed);
     int rc = run_command("cd " + data("scenes") + " && RADCL_SEED=" + std::to_string(seed) + " " +
                              bin_dir() + "/rtrace -h -I " + options + " " + octree + " < " + grid +
                              " > " + out.string(),
                          &c.log);
     if (rc != 0) return c;
     ours.push_back(grid_error(read_rgb(out.string()), conv));
-    fs::remove(out);
   }
   for (int i = 1; i <= radiance_runs; ++i)
     theirs.push_back(grid_error(

@@ -19,6 +19,7 @@
 #include "radcl/image/picture.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "reference_data.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace radcl::test::golden {
@@ -77,16 +78,15 @@ inline std::vector<double> mean_view(const std::string& options, const std::stri
                                      int reps, int w, int h, std::string* log) {
   namespace fs = std::filesystem;
   std::vector<double> ours(std::size_t(w) * h, 0.0);
+  const TempFolder tmp("view");
   for (int k = 0; k < reps; ++k) {
-    fs::path out = fs::temp_directory_path() /
-                   ("radcl-view-" + std::to_string(::getpid()) + "-" + std::to_string(k) + ".hdr");
+    const fs::path out = tmp / (std::to_string(k) + ".hdr");
     int rc =
         run_command("cd " + data("scenes") + " && RADCL_SEED=" + std::to_string(k + 1) + " " +
                         bin_dir() + "/rpict -u+ " + options + " -o " + out.string() + " " + octree,
                     log);
     if (rc != 0) return {};
     image::Picture pic = image::read_picture(out.string());
-    fs::remove(out);
     if (pic.width != w || pic.height != h) {
       *log = "picture of " + std::to_string(pic.width) + " x " + std::to_string(pic.height);
       return {};

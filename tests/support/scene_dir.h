@@ -1,8 +1,10 @@
 // Render tests that write their own small scenes: a fixture that moves the current directory
 // into a fresh temporary folder for each test (Radiance finds files through RAYPATH's "."),
-// and a render of primary rays through a scene file there.
+// and renders of primary rays through a scene file there (the load, renderer and render that
+// every such test would otherwise repeat).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -51,6 +53,25 @@ protected:
     std::vector<render::PrimaryResult> res(rays.size());
     r.render(rays, res);
     return res;
+  }
+
+  // The value (radiance, or irradiance with -i/-I) of each of `rays`, as render_rays.
+  static std::vector<render::Vec3d> render_values(const std::string& file,
+                                                  const std::vector<render::PrimaryRay>& rays,
+                                                  const render::RenderSettings& st) {
+    std::vector<render::Vec3d> v;
+    for (const render::PrimaryResult& r : render_rays(file, rays, st))
+      v.push_back(r.value);
+    return v;
+  }
+
+  // Rays straight down (-z) from height `z` over each (x, y) of `at`.
+  static std::vector<render::PrimaryRay> rays_down(const std::vector<std::array<double, 2>>& at,
+                                                   double z) {
+    std::vector<render::PrimaryRay> rays;
+    for (const auto& p : at)
+      rays.push_back({{p[0], p[1], z}, {0, 0, -1}, 0});
+    return rays;
   }
 
   // Where -I meters along `rays` measure in scene file `file` (render/pipeline/irradiance_meter.h).

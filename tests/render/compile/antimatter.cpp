@@ -6,7 +6,6 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <sstream>
-#include <unistd.h>
 
 #include "radcl/device/context.h"
 #include "radcl/geometry/scene_geometry.h"
@@ -14,6 +13,8 @@
 #include "radcl/render/pipeline/irradiance_meter.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
+#include "warnings.h"
 
 using namespace radcl;
 
@@ -46,15 +47,7 @@ std::string box(const std::string& mod, const std::string& name, double x0, doub
 }
 
 struct Scene {
-  explicit Scene(const std::string& body) {
-    // ctest runs the cases as parallel processes: one folder each.
-    auto dir =
-        std::filesystem::temp_directory_path() / ("radcl_antimatter." + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    path = (dir / (std::to_string(counter++) + ".rad")).string();
-    std::ofstream(path) << body;
-  }
-  ~Scene() { std::filesystem::remove(path); }
+  explicit Scene(const std::string& body) { std::ofstream(path) << body; }
   // Radiance (green) of each ray, or irradiance at -I sensors.
   std::vector<double> values(std::vector<render::PrimaryRay> rays, bool sensors = false) {
     scene::LoadedScene ls = scene::load_scene({path});
@@ -86,14 +79,9 @@ struct Scene {
     geometry::SceneGeometry geom(ls);
     return render::compile_scene(ls, geom);
   }
-  std::string path;
-  static inline int counter = 0;
+  test::TempFolder dir{"antimatter"};
+  std::string path = (dir / "s.rad").string();
 };
-
-std::vector<std::string> g_warnings;
-void capture(const std::string& msg) {
-  g_warnings.push_back(msg);
-}
 
 // A lamp facing down at z = 5 (half-width w), an opaque plastic wall at z = 1 facing down, and
 // an antimatter box (void mod1) around a 1 x 1 hole in the wall.
@@ -196,15 +184,13 @@ TEST(Antimatter, ArgumentErrorsAndWarnings) {
     }
   }
   {
-    g_warnings.clear();
-    set_warning_sink(capture);
+    test::CapturedWarnings warnings;
     Scene s(wall + "void antimatter cut 4 void nothere wallmat wallmat 0 0\n" +
             box("cut", "b", 0, 0, 0, 1, 1, 1));
     render::CompiledScene cs = s.compile();
-    set_warning_sink(nullptr);
-    ASSERT_EQ(g_warnings.size(), 2u);
-    EXPECT_EQ(g_warnings[0], "unknown modifier \"nothere\" for antimatter \"cut\"");
-    EXPECT_EQ(g_warnings[1], "duplicate modifier for antimatter \"cut\"");
+    ASSERT_EQ(warnings.list().size(), 2u);
+    EXPECT_EQ(warnings.list()[0], "unknown modifier \"nothere\" for antimatter \"cut\"");
+    EXPECT_EQ(warnings.list()[1], "duplicate modifier for antimatter \"cut\"");
     // The wall is clipped (its bit set), the box's faces are not; void mod1 uses no counter.
     EXPECT_EQ(cs.surfaces[1].clip, 1u);
     EXPECT_EQ(cs.surfaces[1].slots, 0u);

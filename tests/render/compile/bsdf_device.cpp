@@ -1,7 +1,8 @@
 // kernels/materials/bsdf_eval.cl on the device against the host reference evaluator
 // (radcl/bsdf/evaluate.h), on the reference genBSDF files and the hand-made ones: values,
 // totals, the sampler's directions, densities and distribution, and Radiance's preprocessing
-// (render/compile/bsdf_tables.h). The device program is built from tests/render/compile/bsdf_device_kernel.cl.
+// (render/compile/bsdf_tables.h). The device program is built from
+// tests/render/compile/bsdf_device_kernel.cl.
 #include "radcl/bsdf/evaluate.h"
 #include "radcl/bsdf/xml_reader.h"
 #include "radcl/device/buffer.h"
@@ -9,6 +10,7 @@
 #include "radcl/device/program.h"
 #include "radcl/render/compile/bsdf_tables.h"
 
+#include "files.h"
 #include "test_env.h"
 
 #include <gtest/gtest.h>
@@ -16,11 +18,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -59,13 +59,12 @@ Tables& tables() {
   s->comps = Buffer::from(ctx, s->t.comps);
   s->vals = Buffer::from(ctx, s->t.vals);
   s->ints = Buffer::from(ctx, s->t.ints);
-  std::ifstream in(test::source_dir() + "/tests/render/compile/bsdf_device_kernel.cl");
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string text =
+      test::read_file(test::source_dir() + "/tests/render/compile/bsdf_device_kernel.cl");
   // Test kernels are not embedded: they come in as the generated file, which the feature probe
   // (compiled with no material defines, so empty) includes.
   s->program = std::make_unique<device::Program>(
-      ctx, device::ProgramSource{{"probe/features.cl"}, text.str(), "-cl-std=CL1.2"});
+      ctx, device::ProgramSource{{"probe/features.cl"}, text, "-cl-std=CL1.2"});
   return *s;
 }
 

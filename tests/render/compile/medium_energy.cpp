@@ -3,39 +3,31 @@
 // L exp(-e d) + a L (1 - exp(-e d)). With a = 1 that is L whatever e and d: a medium that only
 // scatters neither makes nor loses light (energy conservation, exact up to float rounding).
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
+#include "files.h"
+#include "run_program.h"
+#include "temp_dir.h"
 #include "test_env.h"
-
-namespace fs = std::filesystem;
 
 namespace {
 
 // rtrace's values for rays from the centre of a bubble of radius 10 (L = .3 .5 .7).
 std::vector<std::array<double, 3>> furnace(const std::string& medium) {
-  fs::path dir = fs::temp_directory_path() / ("radcl-furnace-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  {
-    std::FILE* f = std::fopen((dir / "furnace.rad").c_str(), "w");
-    EXPECT_NE(f, nullptr);
-    std::fprintf(f, "void glow g\n0\n0\n4 .3 .5 .7 0\ng bubble b\n0\n0\n4 0 0 0 10\n");
-    std::fclose(f);
-    f = std::fopen((dir / "rays.txt").c_str(), "w");
-    std::fprintf(f, "0 0 0 1 0 0\n0 0 0 0 0 -1\n3 4 0 0.6 -0.8 0\n-5 1 2 1 1 1\n");
-    std::fclose(f);
-  }
-  std::string out;
-  int rc = radcl::test::run_command("cd " + dir.string() + " && " + radcl::test::bin_dir() +
-                                        "/rtrace -h -ab 0 -av .3 .5 .7 " + medium +
-                                        " furnace.rad < rays.txt",
-                                    &out);
-  fs::remove_all(dir);
-  EXPECT_EQ(rc, 0) << out;
+  const radcl::test::TempFolder dir("furnace");
+  radcl::test::write_file(dir / "furnace.rad",
+                          "void glow g\n0\n0\n4 .3 .5 .7 0\ng bubble b\n0\n0\n4 0 0 0 10\n");
+  const radcl::test::ProgramRun r =
+      radcl::test::Program("rtrace")
+          .input("0 0 0 1 0 0\n0 0 0 0 0 -1\n3 4 0 0.6 -0.8 0\n-5 1 2 1 1 1\n")
+          .in(dir.str())
+          .merge_err()
+          .run("-h -ab 0 -av .3 .5 .7 " + medium + " furnace.rad");
+  const std::string& out = r.out;
+  EXPECT_EQ(r.rc, 0) << out;
   std::vector<std::array<double, 3>> v;
   std::istringstream in(out);
   std::array<double, 3> c;

@@ -10,12 +10,13 @@
 #include <numbers>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
+#include "files.h"
+#include "run_program.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
-namespace fs = std::filesystem;
 using Rgb = std::array<double, 3>;
 
 namespace {
@@ -28,19 +29,14 @@ struct Traced {
 
 // rtrace -h <options> on scene text `rad` with the ray lines `rays`.
 Traced rtrace(const std::string& rad, const std::string& rays, const std::string& options) {
-  fs::path dir = fs::temp_directory_path() / ("radcl-mist-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  for (auto [name, text] : {std::pair{"s.rad", &rad}, std::pair{"rays.txt", &rays}}) {
-    std::FILE* f = std::fopen((dir / name).c_str(), "w");
-    EXPECT_NE(f, nullptr);
-    std::fputs(text->c_str(), f);
-    std::fclose(f);
-  }
+  const radcl::test::TempFolder dir("mist");
+  radcl::test::write_file(dir / "s.rad", rad);
   Traced r;
-  r.rc = radcl::test::run_command("cd " + dir.string() + " && " + radcl::test::bin_dir() +
-                                      "/rtrace -h " + options + " s.rad < rays.txt 2>&1",
-                                  &r.log);
-  fs::remove_all(dir);
+  const radcl::test::ProgramRun run =
+      radcl::test::Program("rtrace").input(rays).in(dir.str()).merge_err().run("-h " + options +
+                                                                               " s.rad");
+  r.rc = run.rc;
+  r.log = run.out;
   std::istringstream in(r.log);
   for (std::string line; std::getline(in, line);) { // the values, not the messages
     std::istringstream l(line);

@@ -8,15 +8,14 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 
 #include "radcl/device/context.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/util/error.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -26,20 +25,11 @@ const char* kMaterials = "void plastic red 0 0 5 0.6 0.2 0.2 0 0\n"
 
 using Rgb = std::array<double, 3>;
 
-class Mixfunc : public ::testing::Test {
+class Mixfunc : public radcl::test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_mixfunc_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    SceneDir::SetUp();
     std::ofstream(dir / "mix.cal") << "sel = if(Px, 1, 0);\n";
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
   }
   // The radiance seen straight down from z = 2 at (x, y) in a scene of the sun, the test
   // materials and `rest`.
@@ -47,20 +37,10 @@ protected:
     std::ofstream(dir / "scene.rad") << "void light sunmat 0 0 3 1000 1000 1000\n"
                                      << "sunmat source sun 0 0 4 0 0 1 1\n"
                                      << kMaterials << rest << "\n";
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
     render::RenderSettings st;
     st.ab = 0;
     st.dj = 0;
-    render::Renderer r(ls, st, device::default_context());
-    std::vector<render::PrimaryRay> pr;
-    for (const auto& p : at)
-      pr.push_back({{p[0], p[1], 2}, {0, 0, -1}, 0});
-    std::vector<render::PrimaryResult> res(pr.size());
-    r.render(pr, res);
-    std::vector<Rgb> out;
-    for (const auto& x : res)
-      out.push_back(x.value);
-    return out;
+    return render_values("scene.rad", rays_down(at, 2), st);
   }
   static std::string floor(const std::string& mod) {
     return mod + " polygon floor 0 0 12 -10 -10 0 10 -10 0 10 10 0 -10 10 0\n";

@@ -8,12 +8,12 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 
 #include "radcl/device/context.h"
 #include "radcl/image/picture.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/util/error.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -54,22 +54,13 @@ Rgb scale(double s, const Rgb& a) {
 const Rgb kGa{2, 0, 0}, kGb{0, 0, 4}, kGc{0, 3, 0}, kGd{1, 1, 1};
 const Rgb kCa{1, 0.5, 0.25}, kCb{0.2, 0.4, 0.8};
 
-class Mixtures : public ::testing::Test {
+class Mixtures : public radcl::test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_mixtures_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    SceneDir::SetUp();
     std::ofstream(dir / "mix.cal") << kCal;
     for (const char* f : {"mix_ramp.dat", "mix_grid.dat"})
       fs::copy_file(test::data(std::string("render/") + f), dir / f);
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
   }
   // The radiance seen straight down from z = 2 at each (x, y), in a scene of a sun overhead,
   // the test modifiers and `rest` (rtrace -ab 0 -dj 0).
@@ -78,21 +69,11 @@ protected:
     std::ofstream(dir / "scene.rad") << "void light sunmat 0 0 3 1000 1000 1000\n"
                                      << "sunmat source sun 0 0 4 0 0 1 1\n"
                                      << kModifiers << rest << "\n";
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
     render::RenderSettings st;
     st.ab = 0;
     st.dj = 0;
     st.irradiance_i = irradiance;
-    render::Renderer r(ls, st, device::default_context());
-    std::vector<render::PrimaryRay> pr;
-    for (const auto& p : at)
-      pr.push_back({{p[0], p[1], 2}, {0, 0, -1}, 0});
-    std::vector<render::PrimaryResult> res(pr.size());
-    r.render(pr, res);
-    std::vector<Rgb> out;
-    for (const auto& x : res)
-      out.push_back(x.value);
-    return out;
+    return render_values("scene.rad", rays_down(at, 2), st);
   }
   Rgb render1(const std::string& rest, double x = 0.5, double y = 0.5) {
     return render(rest, {{x, y}})[0];

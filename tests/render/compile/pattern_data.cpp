@@ -6,7 +6,6 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 
 #include "radcl/device/context.h"
 #include "radcl/geometry/scene_geometry.h"
@@ -14,10 +13,10 @@
 #include "radcl/render/compile/compiled_scene.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/util/error.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -33,25 +32,16 @@ const char* kLine = "# a line\n1\n0 4 5\n3 2 4 8 16 # values\n";
 // 2-D: first axis explicit (0 1 3), second evenly spaced (0, 10); last axis varies fastest.
 const char* kGrid = "2\n0 0 3  0 1 3\n0 10 2\n1 2\n3 5\n7 11\n";
 
-class PatternData : public ::testing::Test {
+class PatternData : public radcl::test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_pattern_data_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    SceneDir::SetUp();
     std::ofstream(dir / "d.cal") << kCal;
     std::ofstream(dir / "line.dat") << kLine;
     std::ofstream(dir / "grid.dat") << kGrid;
     std::ofstream(dir / "r.dat") << "1\n0 1 2\n1 3\n";
     std::ofstream(dir / "g.dat") << "1\n0 1 2\n10 20\n";
     std::ofstream(dir / "b.dat") << "1\n0 1 2\n100 200\n";
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
   }
   // The glowing floor's radiance seen from above each (x, y): the pattern's colour.
   std::vector<std::array<double, 3>> glow(const std::string& mods, const std::string& chain,
@@ -60,23 +50,13 @@ protected:
         << mods << "\n"
         << chain << " glow lit 0 0 4 1 1 1 0\n"
         << "lit polygon floor 0 0 12 -20 -20 0 20 -20 0 20 20 0 -20 20 0\n";
-    return render_rays(at);
+    return render_down(at);
   }
-  std::vector<std::array<double, 3>> render_rays(const std::vector<std::array<double, 2>>& at) {
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
+  std::vector<std::array<double, 3>> render_down(const std::vector<std::array<double, 2>>& at) {
     render::RenderSettings st;
     st.ab = 0;
     st.dj = 0;
-    render::Renderer r(ls, st, device::default_context());
-    std::vector<render::PrimaryRay> pr;
-    for (const auto& p : at)
-      pr.push_back({{p[0], p[1], 1}, {0, 0, -1}, 0});
-    std::vector<render::PrimaryResult> res(pr.size());
-    r.render(pr, res);
-    std::vector<std::array<double, 3>> out;
-    for (const auto& x : res)
-      out.push_back(x.value);
-    return out;
+    return render_values("scene.rad", rays_down(at, 1), st);
   }
   void fails(const std::string& mods, const std::string& want) {
     try {
@@ -147,7 +127,7 @@ TEST_F(PatternData, TexdataTiltsTheNormal) {
         << mods << "\n"
         << chain << " plastic grey 0 0 5 0.5 0.5 0.5 0 0\n"
         << "grey polygon floor 0 0 12 -10 -10 0 10 -10 0 10 10 0 -10 10 0\n";
-    return render_rays({{3, 2}});
+    return render_down({{3, 2}});
   };
   auto plain = floor("", "void");
   auto tex = floor("void texdata t 8 tx ty tz half.dat zero.dat zero.dat d.cal 0.5 0 0", "t");

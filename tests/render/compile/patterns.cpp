@@ -6,15 +6,14 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 
 #include "radcl/device/context.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/util/error.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -28,20 +27,11 @@ glowing = if(Dx, 2, 3);
 )";
 
 // Radiance of the floor seen from above at (x, y), optionally seen along `dir`.
-class Patterns : public ::testing::Test {
+class Patterns : public radcl::test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_patterns_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    SceneDir::SetUp();
     std::ofstream(dir / "pat.cal") << kCal;
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
   }
   // `mods`: pattern primitives; `chain`: the floor material's modifier.
   std::vector<std::array<double, 3>> render(const std::string& mods, const std::string& chain,
@@ -52,20 +42,13 @@ protected:
         << mods << "\n"
         << chain << " plastic grey 0 0 5 0.5 0.5 0.5 0 0\n"
         << "grey polygon floor 0 0 12 -10 -10 0 10 -10 0 10 10 0 -10 10 0\n";
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
     render::RenderSettings st;
     st.ab = 0;
     st.dj = 0;
-    render::Renderer r(ls, st, device::default_context());
     std::vector<render::PrimaryRay> pr;
     for (const auto& v : rays)
       pr.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, 0});
-    std::vector<render::PrimaryResult> res(pr.size());
-    r.render(pr, res);
-    std::vector<std::array<double, 3>> out;
-    for (const auto& x : res)
-      out.push_back(x.value);
-    return out;
+    return render_values("scene.rad", pr, st);
   }
   std::array<double, 6> down(double x, double y) { return {x, y, 1, 0, 0, -1}; }
 };
@@ -127,13 +110,10 @@ TEST_F(Patterns, PatternOnAGlow) {
   std::ofstream(dir / "glow.rad") << "void brightfunc g 2 glowing pat.cal 0 0\n"
                                   << "g glow warm 0 0 4 1 1 1 0\n"
                                   << "warm sphere ball 0 0 4 0 0 0 1\n";
-  scene::LoadedScene ls = scene::load_scene({"glow.rad"});
   render::RenderSettings st;
   st.ab = 0;
-  render::Renderer r(ls, st, device::default_context());
-  std::vector<render::PrimaryRay> pr = {{{-5, 0, 0}, {1, 0, 0}, 0}, {{5, 0, 0}, {-1, 0, 0}, 0}};
-  std::vector<render::PrimaryResult> res(2);
-  r.render(pr, res);
+  const auto res =
+      render_rays("glow.rad", {{{-5, 0, 0}, {1, 0, 0}, 0}, {{5, 0, 0}, {-1, 0, 0}, 0}}, st);
   EXPECT_NEAR(res[0].value[0], 2.0, 1e-5);
   EXPECT_NEAR(res[1].value[0], 3.0, 1e-5);
 }

@@ -19,6 +19,7 @@
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/scene/mesh_writer.h"
 #include "radcl/util/error.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -47,17 +48,12 @@ template <class F> std::string fatal(F f) {
   return "";
 }
 
-class TextPatterns : public ::testing::Test {
+class TextPatterns : public radcl::test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   std::string old_raypath;
   bool had_raypath = false;
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_text_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
+    SceneDir::SetUp();
     if (const char* rp = std::getenv("RAYPATH")) old_raypath = rp, had_raypath = true;
     // The current directory (text files), then the fonts.
     setenv("RAYPATH", (":" + radcl::test::data("fonts")).c_str(), 1);
@@ -67,8 +63,7 @@ protected:
       setenv("RAYPATH", old_raypath.c_str(), 1);
     else
       unsetenv("RAYPATH");
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
+    SceneDir::TearDown();
   }
   void write(const std::string& name, const std::string& text) {
     std::ofstream(dir / name) << text;
@@ -177,7 +172,8 @@ TEST(FontFile, LineSpacing) {
 }
 
 TEST(FontFile, BadFilesAreFatalWithTheirName) {
-  fs::path p = fs::temp_directory_path() / ("radcl_bad_font_" + std::to_string(::getpid()));
+  const radcl::test::TempFolder dir("bad_font");
+  const fs::path p = dir / "bad.fnt";
   auto check = [&](const std::string& text, const std::string& message) {
     std::ofstream(p) << text;
     std::string got = fatal([&] { render::read_font_file(p.string(), "bad.fnt"); });
@@ -191,7 +187,6 @@ TEST(FontFile, BadFilesAreFatalWithTheirName) {
   check("256 0\n", "illegal character (256)");
   check("0 0\n", "illegal character (0)");
   check("65 0\n65 0\n", "duplicate character (65)");
-  fs::remove(p);
   EXPECT_NE(fatal([] {
               render::read_font_file("/nonexistent/x.fnt", "x.fnt");
             }).find("cannot open font file \"x.fnt\""),

@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "radcl/device/context.h"
 #include "radcl/render/pipeline/renderer.h"
+#include "temp_dir.h"
 
 using namespace radcl;
 
@@ -20,11 +20,6 @@ constexpr double kSunAngle = 0.533; // degrees
 // or a sun straight overhead.
 struct Scene {
   explicit Scene(const std::string& body, bool sun) {
-    // ctest runs the cases as parallel processes: one folder each.
-    auto dir = std::filesystem::temp_directory_path() /
-               ("radcl_transparent_materials." + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    path = (dir / (std::to_string(counter++) + ".rad")).string();
     std::ofstream f(path);
     if (sun)
       f << "void light solar 0 0 3 " << kL << " " << kL << " " << kL << "\n"
@@ -34,7 +29,6 @@ struct Scene {
         << "lamp polygon ceiling 0 0 12 -100 -100 5  -100 100 5  100 100 5  100 -100 5\n";
     f << body;
   }
-  ~Scene() { std::filesystem::remove(path); }
   // Radiance of a ray, or irradiance at a -I sensor (or, with `meters`, at the surface the
   // ray hits: -i).
   double value(render::PrimaryRay ray, bool sensor = false, bool meters = false) {
@@ -54,8 +48,8 @@ struct Scene {
     r.render(std::span(&ray, 1), res);
     return res[0].value[1];
   }
-  std::string path;
-  static inline int counter = 0;
+  radcl::test::TempFolder dir{"transparent_materials"};
+  std::string path = (dir / "s.rad").string();
 };
 
 double sun_solid_angle() {

@@ -11,14 +11,15 @@
 #include "radcl/ambient/ambient_file.h"
 #include "radcl/ambient/format.h"
 #include "reference_data.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 namespace fs = std::filesystem;
 using radcl::test::run_command;
 
 TEST(GoldenAmbientCache, OfficeClearDefaultFromRadiancesCache) {
-  fs::path amb = fs::temp_directory_path() / ("radcl-oc-" + std::to_string(::getpid()) + ".amb");
-  fs::path out = fs::temp_directory_path() / ("radcl-oc-" + std::to_string(::getpid()) + ".txt");
+  const radcl::test::TempFolder tmp("oc");
+  const fs::path amb = tmp / "oc.amb", out = tmp / "oc.txt";
   fs::copy_file(radcl::test::data("results/office_clear_default.amb"), amb,
                 fs::copy_options::overwrite_existing);
   std::string log;
@@ -46,8 +47,6 @@ TEST(GoldenAmbientCache, OfficeClearDefaultFromRadiancesCache) {
   radcl::ambient::AmbientFile f;
   EXPECT_GE(f.open(amb.string(), {}).size(), 2253u);
   f.close();
-  fs::remove(amb);
-  fs::remove(out);
 }
 
 namespace {
@@ -56,16 +55,15 @@ namespace {
 std::vector<std::array<double, 3>> rtrace_sensors(const std::string& opts,
                                                   const std::string& octree, const std::string& pts,
                                                   const std::string& env = "") {
-  fs::path out = fs::temp_directory_path() / ("radcl-cache-" + std::to_string(::getpid()) + ".txt");
+  const radcl::test::TempFolder tmp("cache");
+  const fs::path out = tmp / "out.txt";
   std::string log;
   int rc =
       run_command("cd " + radcl::test::data("scenes") + " && " + env + radcl::test::bin_dir() +
                       "/rtrace -h -I " + opts + " " + octree + " < " + pts + " > " + out.string(),
                   &log);
   EXPECT_EQ(rc, 0) << log;
-  auto v = radcl::test::read_rgb(out.string());
-  fs::remove(out);
-  return v;
+  return radcl::test::read_rgb(out.string());
 }
 
 double exact_sphere(int ab) {
@@ -128,8 +126,8 @@ std::array<int, 5> records_per_level(const fs::path& amb) {
 }
 
 TEST(GoldenAmbientCache, OfficeClearDefaultFromScratch) {
-  fs::path amb = fs::temp_directory_path() / ("radcl-ocnew-" + std::to_string(::getpid()) + ".amb");
-  fs::remove(amb);
+  const radcl::test::TempFolder tmp("ocnew");
+  const fs::path amb = tmp / "ocnew.amb";
   auto ours =
       rtrace_sensors("-u- -ab 5 -ad 1024 -as 256 -ar 256 -aa 0.15 -lw 1e-3 -af " + amb.string(),
                      "office_clear.oct", "office_grid.pts", "RADCL_LEAK_TEST=0 ");
@@ -143,7 +141,6 @@ TEST(GoldenAmbientCache, OfficeClearDefaultFromScratch) {
     EXPECT_GT(per_level[l], 0.65 * radiance[l]) << "level " << l;
     EXPECT_LT(per_level[l], 1.35 * radiance[l]) << "level " << l;
   }
-  fs::remove(amb);
 }
 
 // Issue 7's accuracy bound, radcl's mean and worst sensor errors at most 1.5 times those of
@@ -235,10 +232,8 @@ TEST(GoldenAmbientCache, AmbientValueWeight) {
     return m;
   };
   const std::string o = "-u- -ab 1 -ad 1024 -as 256 -ar 64 -lw 1e-5 -av 0 0 0 -aa 0.1 ";
-  const std::string tag = std::to_string(::getpid());
-  fs::path base = fs::temp_directory_path() / ("radcl-aw-" + tag + ".amb");
-  fs::path tilted = fs::temp_directory_path() / ("radcl-aw-" + tag + ".pts");
-  fs::remove(base);
+  const radcl::test::TempFolder tmp("aw");
+  const fs::path base = tmp / "base.amb", tilted = tmp / "tilted.pts";
   rtrace_sensors(o + "-aw 1 -af " + base.string(), "sphere.oct", "sphere_wall.pts");
   {
     std::ifstream in(radcl::test::data("scenes/sphere_wall.pts"));
@@ -256,7 +251,7 @@ TEST(GoldenAmbientCache, AmbientValueWeight) {
     }
   }
   auto second = [&](const std::string& aw) {
-    fs::path copy = fs::temp_directory_path() / ("radcl-aw-" + tag + "-" + aw + ".amb");
+    const fs::path copy = tmp / (aw + ".amb");
     fs::copy_file(base, copy, fs::copy_options::overwrite_existing);
     double m = mean(
         rtrace_sensors(o + "-aw " + aw + " -af " + copy.string(), "sphere.oct", tilted.string()));
@@ -268,8 +263,6 @@ TEST(GoldenAmbientCache, AmbientValueWeight) {
   // 2.309 against 1.896, +22%); without the average both would be equal.
   EXPECT_GT(weighted, plain * 1.1) << plain;
   EXPECT_LT(weighted, exact_sphere(8)); // far from every bounce's light
-  fs::remove(base);
-  fs::remove(tilted);
   const std::string s = "-u- -ab 1 -ad 1024 -as 256 -lw 1e-5 -av 0 0 0 ";
   double a = mean(rtrace_sensors(s + "-aa 0 -aw 0", "sphere.oct", "sphere_wall.pts"));
   double b = mean(rtrace_sensors(s + "-aa 0 -aw 10", "sphere.oct", "sphere_wall.pts"));

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 
 #include "golden_draws.h"
 #include "golden_scene.h"
@@ -17,6 +16,7 @@
 #include "radcl/render/pipeline/renderer.h"
 #include "radcl/util/error.h"
 #include "reference_data.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -125,9 +125,8 @@ TEST(GoldenAniso, ViewMeanAndReducedPicture) {
 // Radiance's refusals, as fatal errors naming the material.
 TEST(GoldenAniso, BadArgumentsAreFatal) {
   auto fails = [](const std::string& mat, const std::string& what) {
-    fs::path dir = fs::temp_directory_path() / ("radcl-aniso-bad-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    fs::path rad = dir / "bad.rad";
+    const test::TempFolder dir("aniso_bad");
+    const fs::path rad = dir / "bad.rad";
     {
       std::FILE* f = std::fopen(rad.c_str(), "w");
       ASSERT_NE(f, nullptr);
@@ -137,7 +136,6 @@ TEST(GoldenAniso, BadArgumentsAreFatal) {
     std::string log;
     int rc = test::run_command(
         "echo '0 0 5 0 0 -1' | " + test::bin_dir() + "/rtrace -h " + rad.string(), &log);
-    fs::remove_all(dir);
     EXPECT_NE(rc, 0) << mat;
     EXPECT_NE(log.find(what), std::string::npos) << log;
     EXPECT_EQ(log.find("internal error"), std::string::npos) << log;

@@ -5,22 +5,22 @@
 // energy in a closed box of BSDF walls.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
+#include "files.h"
 #include "golden_draws.h"
 #include "golden_scene.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "reference_data.h"
+#include "run_program.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
 using namespace radcl::test::golden;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -41,23 +41,16 @@ std::vector<double> radiance_mean(const std::string& stem, int runs) {
 // is left as the caller has it (radcl's own library, or Radiance's, must stay on it).
 std::string run_scene(std::vector<std::pair<std::string, std::string>> files,
                       const std::string& options, const std::string& rays, int* rc) {
-  fs::path dir = fs::temp_directory_path() / ("radcl-bsdf-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const test::TempFolder dir("bsdf");
   for (auto& [name, text] : files) {
     for (std::size_t at; (at = text.find("@DIR@")) != std::string::npos;)
-      text.replace(at, 5, dir.string());
-    std::FILE* f = std::fopen((dir / name).c_str(), "w");
-    if (!f) continue;
-    std::fputs(text.c_str(), f);
-    std::fclose(f);
+      text.replace(at, 5, dir.str());
+    test::write_file(dir / name, text);
   }
-  std::string out;
-  *rc = test::run_command("cd " + test::data("scenes") + " && printf '" + rays + "' | " +
-                              test::bin_dir() + "/rtrace -h " + options + " " +
-                              (dir / "scene.rad").string(),
-                          &out);
-  fs::remove_all(dir);
-  return out;
+  const test::ProgramRun r = test::Program("rtrace").input(rays).merge_err().run(
+      "-h " + options + " " + (dir / "scene.rad").string());
+  *rc = r.rc;
+  return r.out;
 }
 
 } // namespace
@@ -143,8 +136,8 @@ TEST(GoldenBsdf, ViewMeanAndReducedPicture) {
 // component, estimated from 29 directions about the peak, and the samples it excludes near it
 // do not add up exactly, and rays along the peak come back 2% above L (Radiance 5.4a: 1.024).
 TEST(GoldenBsdf, ClosedBoxNeverAmplifies) {
-  const std::string rays = "0.5 0.5 0.5 1 0.2 0.1\\n0.5 0.5 0.5 -0.3 1 0.2\\n0.5 0.5 0.5 0.1 "
-                           "-0.2 1\\n0.5 0.5 0.5 0.2 0.1 -1\\n0.5 0.5 0.5 -1 -0.3 0.2\\n";
+  const std::string rays = "0.5 0.5 0.5 1 0.2 0.1\n0.5 0.5 0.5 -0.3 1 0.2\n0.5 0.5 0.5 0.1 "
+                           "-0.2 1\n0.5 0.5 0.5 0.2 0.1 -1\n0.5 0.5 0.5 -1 -0.3 0.2\n";
   for (const char* mat : {"void BSDF w\n6 0 blinds_klems.xml 1 .5 .3 .\n0\n0\n",
                           "void BSDF w\n6 0 film_t3.xml 1 .5 .3 .\n0\n0\n",
                           "void aBSDF w\n5 film_t3.xml 1 .5 .3 .\n0\n0\n"}) {
@@ -180,7 +173,7 @@ TEST(GoldenBsdf, BadArgumentsAreFatal) {
     std::string out =
         run_scene({{"scene.rad", mat + "\nm polygon p\n0\n0\n12 0 0 0 1 0 0 1 1 0 0 1 0\n"},
                    {"bad.xml", "<"}},
-                  "", "0.5 0.5 1 0 0 -1\\n", &rc);
+                  "", "0.5 0.5 1 0 0 -1\n", &rc);
     EXPECT_NE(rc, 0) << mat;
     EXPECT_NE(out.find(what), std::string::npos) << out;
     EXPECT_EQ(out.find("internal error"), std::string::npos) << out;

@@ -15,13 +15,13 @@
 #include <map>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
+#include "files.h"
 #include "reference_data.h"
+#include "run_program.h"
 #include "test_env.h"
 
-namespace fs = std::filesystem;
 using radcl::test::data;
 
 namespace {
@@ -76,23 +76,18 @@ void mean_var(const std::vector<double>& v, double* m, double* var) {
 
 // radcl's 8 draws of the scene's sensors, or empty with *log set.
 std::vector<std::vector<double>> radcl_draws(const Scene& s, std::string* log) {
-  const fs::path rep = fs::temp_directory_path() /
-                       ("radcl-corpus-" + std::to_string(::getpid()) + "-" + s.name + ".pts");
-  {
-    std::ifstream in(data("corpus/" + s.name + ".pts"));
-    std::stringstream ss;
-    ss << in.rdbuf();
-    std::ofstream out(rep);
-    for (int k = 0; k < kReps; ++k)
-      out << ss.str();
-  }
-  std::string out;
-  const int rc = radcl::test::run_command("cd " + data("corpus") + " && RADCL_SEED=54 " +
-                                              radcl::test::bin_dir() + "/rtrace -h -I -u+ " +
-                                              kOptions + " " + s.extra + " " + s.name + ".rad < " +
-                                              rep.string() + " 2>/dev/null",
-                                          &out);
-  fs::remove(rep);
+  const std::string pts = radcl::test::read_file(data("corpus/" + s.name + ".pts"));
+  std::string input;
+  for (int k = 0; k < kReps; ++k)
+    input += pts;
+  const radcl::test::ProgramRun run =
+      radcl::test::Program("rtrace")
+          .in(data("corpus"))
+          .env("RADCL_SEED=54 ")
+          .input(input)
+          .run(std::string("-h -I -u+ ") + kOptions + " " + s.extra + " " + s.name + ".rad");
+  const int rc = run.rc;
+  const std::string& out = run.out;
   std::vector<std::vector<double>> rows;
   std::istringstream in(out);
   std::string line;

@@ -18,6 +18,7 @@
 #include "radcl/image/picture.h"
 #include "radcl/render/pipeline/renderer.h"
 #include "reference_data.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -139,9 +140,8 @@ TEST_F(GoldenPrism, ViewMeanAndReducedPicture) {
 // Bad string arguments and a missing function file are fatal errors naming the material.
 TEST_F(GoldenPrism, BadArgumentsAreFatal) {
   auto fails = [](const std::string& mat, const std::string& what) {
-    fs::path dir = fs::temp_directory_path() / ("radcl-prism-bad-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    fs::path rad = dir / "bad.rad";
+    const test::TempFolder dir("prism_bad");
+    const fs::path rad = dir / "bad.rad";
     {
       std::FILE* f = std::fopen(rad.c_str(), "w");
       ASSERT_NE(f, nullptr);
@@ -151,7 +151,6 @@ TEST_F(GoldenPrism, BadArgumentsAreFatal) {
     std::string log;
     int rc = test::run_command(
         "echo '0.5 0.5 1 0 0 -1' | " + test::bin_dir() + "/rtrace -h " + rad.string(), &log);
-    fs::remove_all(dir);
     EXPECT_NE(rc, 0) << mat;
     EXPECT_NE(log.find(what), std::string::npos) << log;
     EXPECT_EQ(log.find("internal error"), std::string::npos) << log;

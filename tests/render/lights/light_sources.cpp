@@ -6,13 +6,14 @@
 #include <gtest/gtest.h>
 #include <numbers>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "radcl/render/lights/light_sources.h"
 #include "radcl/scene/loader.h"
 #include "radcl/util/error.h"
+#include "temp_dir.h"
 #include "test_env.h"
+#include "warnings.h"
 
 using namespace radcl;
 namespace fs = std::filesystem;
@@ -21,12 +22,10 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// Kept from the first scene compiled on, as that scene's warnings are checked.
 std::vector<std::string>& warnings() {
-  static std::vector<std::string> w;
-  return w;
-}
-void capture(const std::string& msg) {
-  warnings().push_back(msg);
+  static test::CapturedWarnings captured;
+  return captured.list();
 }
 
 struct Compiled {
@@ -46,19 +45,11 @@ Compiled compile_file(const std::string& path) {
 }
 
 Compiled compile_text(const std::string& text) {
-  const fs::path p =
-      fs::temp_directory_path() / ("radcl_light_sources_" + std::to_string(::getpid()) + ".rad");
+  const test::TempFolder tmp("light_sources");
+  const fs::path p = tmp / "s.rad";
   std::ofstream(p) << text;
   warnings().clear();
-  set_warning_sink(capture);
-  try {
-    Compiled c = compile_file(p.string());
-    fs::remove(p);
-    return c;
-  } catch (...) {
-    fs::remove(p);
-    throw;
-  }
+  return compile_file(p.string());
 }
 
 std::string fatal_of(const std::string& text) {

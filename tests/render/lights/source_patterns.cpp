@@ -7,14 +7,13 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 
 #include "radcl/device/context.h"
 #include "radcl/render/pipeline/renderer.h"
+#include "scene_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -30,21 +29,12 @@ red = 1; green = 0.5; blue = if(Dx, 0.2, 0.1);
 // A 1-D distribution over Dx from -1 to 1: 4 at -1, 1 at 0, 2 at 1.
 const char* kData = "1\n-1 1 3\n4 1 2\n";
 
-class SourcePatterns : public ::testing::Test {
+class SourcePatterns : public radcl::test::SceneDir {
 protected:
-  fs::path dir;
-  char cwd[4096];
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("radcl_srcpat_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    SceneDir::SetUp();
     std::ofstream(dir / "src.cal") << kCal;
     std::ofstream(dir / "dist.dat") << kData;
-    ASSERT_NE(getcwd(cwd, sizeof cwd), nullptr);
-    ASSERT_EQ(chdir(dir.c_str()), 0);
-  }
-  void TearDown() override {
-    EXPECT_EQ(chdir(cwd), 0);
-    fs::remove_all(dir);
   }
   // `mods`: pattern primitives; `chain`: the light material's modifier; `lamp`: the light's
   // surface (modifier `lampmat`).
@@ -56,21 +46,14 @@ protected:
         << chain << " " << lamp << "\n"
         << "void plastic grey 0 0 5 0.5 0.5 0.5 0 0\n"
         << "grey polygon floor 0 0 12 -10 -10 0 10 -10 0 10 10 0 -10 10 0\n";
-    scene::LoadedScene ls = scene::load_scene({"scene.rad"});
     render::RenderSettings st;
     st.ab = 0;
     st.dj = 0;
     st.ds = 0; // one sample per source: its centre
-    render::Renderer r(ls, st, device::default_context());
     std::vector<render::PrimaryRay> pr;
     for (double x : xs)
       pr.push_back({{x, 0, 1}, {0, 0, -1}, 0});
-    std::vector<render::PrimaryResult> res(pr.size());
-    r.render(pr, res);
-    std::vector<std::array<double, 3>> out;
-    for (const auto& v : res)
-      out.push_back(v.value);
-    return out;
+    return render_values("scene.rad", pr, st);
   }
 };
 

@@ -8,16 +8,17 @@
 #include <gtest/gtest.h>
 #include <memory>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
+#include "files.h"
 #include "radcl/device/buffer.h"
 #include "radcl/device/context.h"
 #include "radcl/device/program.h"
 #include "radcl/render/lights/light_sources.h"
 #include "radcl/scene/loader.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -52,11 +53,10 @@ device::Program& program() {
   if (!p) {
     // A test kernel is not embedded: it comes in as the generated file, which the feature
     // probe (no material defines, so it adds nothing) includes.
-    std::ifstream in(test::source_dir() + "/tests/render/lights/test_sources.cl");
-    std::stringstream text;
-    text << in.rdbuf();
-    p = std::make_unique<device::Program>(
-        device::default_context(), device::ProgramSource{{"probe/features.cl"}, text.str(), ""});
+    const std::string text =
+        test::read_file(test::source_dir() + "/tests/render/lights/test_sources.cl");
+    p = std::make_unique<device::Program>(device::default_context(),
+                                          device::ProgramSource{{"probe/features.cl"}, text, ""});
   }
   return *p;
 }
@@ -209,11 +209,10 @@ TEST(SourceSampling, SquarePolygon) {
 TEST(SourceSampling, TrianglePolygonFromCompiler) {
   // A triangle goes through compile_sources(): covering rectangle off its centroid, cells
   // that the triangle only partly covers.
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("radcl_source_sampling_" + std::to_string(::getpid()) + ".rad");
+  const test::TempFolder dir("source_sampling");
+  const auto path = dir / "t.rad";
   std::ofstream(path) << "void light l 0 0 3 10 10 10\nl polygon t 0 0 9  0 0 0  0 3 0  4 0 0\n";
   scene::LoadedScene ls = scene::load_scene({path.string()});
-  std::filesystem::remove(path);
   geometry::SceneGeometry geom(ls);
   auto cs = render::compile_sources(ls.main, geom, [](std::int32_t) { return 0u; });
   ASSERT_EQ(cs.sources.size(), 1u);

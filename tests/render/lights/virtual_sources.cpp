@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "radcl/device/context.h"
 #include "radcl/render/pipeline/renderer.h"
+#include "temp_dir.h"
 
 using namespace radcl;
 
@@ -29,13 +29,8 @@ const std::array<double, 3> kP{0.5, 0, 0};
 
 struct Scene {
   explicit Scene(const std::string& light, const std::string& more = "") {
-    auto dir = std::filesystem::temp_directory_path() /
-               ("radcl_virtual_sources." + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    path = (dir / (std::to_string(counter++) + ".rad")).string();
     std::ofstream(path) << light << kRoom << more;
   }
-  ~Scene() { std::filesystem::remove(path); }
   // Irradiance at the sensor (green) and the renderer's shadow-ray count.
   std::pair<double, std::uint64_t> irradiance(int dr, int dp = 512) {
     scene::LoadedScene ls = scene::load_scene({path});
@@ -50,8 +45,8 @@ struct Scene {
     r.render(std::span(&ray, 1), res);
     return {res[0].value[1], r.stats().shadow};
   }
-  std::string path;
-  static inline int counter = 0;
+  radcl::test::TempFolder dir{"virtual_sources"};
+  std::string path = (dir / "s.rad").string();
 };
 
 } // namespace

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "radcl/image/picture.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -32,8 +32,8 @@ std::vector<double> luminance(const image::Picture& p) {
 // (results/chrome_figures_vtc.hdr) and radcl's agree pixel for pixel; the bound leaves room
 // for float rounding only.
 TEST(ChromeFigures, ReflectionsOfTheFixtureAsRadiance) {
-  const fs::path out =
-      fs::temp_directory_path() / ("radcl-chrome-" + std::to_string(::getpid()) + ".hdr");
+  const test::TempFolder tmp("chrome");
+  const fs::path out = tmp / "out.hdr";
   std::string log;
   const int rc = test::run_command(
       "cd " + test::data("scenes") + " && " + test::bin_dir() +
@@ -43,7 +43,6 @@ TEST(ChromeFigures, ReflectionsOfTheFixtureAsRadiance) {
       &log);
   ASSERT_EQ(rc, 0) << log;
   const std::vector<double> ours = luminance(image::read_picture(out.string()));
-  fs::remove(out);
   const std::vector<double> ref =
       luminance(image::read_picture(test::data("results/chrome_figures_vtc.hdr")));
   ASSERT_EQ(ours.size(), ref.size());

@@ -10,10 +10,10 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "radcl/image/picture.h"
+#include "temp_dir.h"
 #include "test_env.h"
 
 using namespace radcl;
@@ -25,8 +25,8 @@ constexpr int kW = 256, kH = 192;
 
 std::vector<double> render(const std::string& u, const std::string& extra, std::string* log,
                            int seed = 3) {
-  fs::path out = fs::temp_directory_path() / ("radcl-lowdisc-" + std::to_string(::getpid()) + u +
-                                              std::to_string(seed) + ".hdr");
+  const test::TempFolder tmp("lowdisc");
+  const fs::path out = tmp / "out.hdr";
   const std::string view = "-vtl -vp 0.05 0.05 0.5 -vd 0 0 -1 -vu 0 1 0 -vh 1.6 -vv 1.2";
   int rc = test::run_command(
       "cd " + test::data("scenes") + " && RADCL_SEED=" + std::to_string(seed) + " " +
@@ -35,7 +35,6 @@ std::vector<double> render(const std::string& u, const std::string& extra, std::
       log);
   if (rc != 0) return {};
   image::Picture p = image::read_picture(out.string());
-  fs::remove(out);
   if (p.width != kW || p.height != kH) return {};
   std::vector<double> v;
   for (const auto& c : p.colors())

@@ -16,6 +16,7 @@
 #include "radcl/scene/loader.h"
 #include "radcl/util/error.h"
 #include "scene_dir.h"
+#include "warnings.h"
 
 using namespace radcl;
 
@@ -24,28 +25,14 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 using V = std::array<double, 3>;
 
-std::vector<std::string>& warnings() {
-  static std::vector<std::string> w;
-  return w;
-}
-void capture(const std::string& msg) {
-  warnings().push_back(msg);
-}
-
 class StabilityDegenerate : public test::SceneDir {
 protected:
   std::optional<scene::LoadedScene> ls;
   std::optional<geometry::SceneGeometry> geom;
 
-  void SetUp() override {
-    test::SceneDir::SetUp();
-    warnings().clear();
-    set_warning_sink(capture);
-  }
-  void TearDown() override {
-    set_warning_sink(nullptr);
-    test::SceneDir::TearDown();
-  }
+  test::CapturedWarnings captured;
+
+  std::vector<std::string>& warnings() { return captured.list(); }
   void load(const std::string& text) {
     std::ofstream("g.rad", std::ios::trunc) << text;
     geom.reset();
@@ -56,7 +43,7 @@ protected:
     auto h = geom->intersect({x, y, z}, {0, 0, -1}, 0, 1e30);
     return h ? ls->main.objects[h->object].name : "";
   }
-  static bool warned(const std::string& w) {
+  bool warned(const std::string& w) {
     for (const auto& s : warnings())
       if (s == w) return true;
     return false;
