@@ -304,6 +304,7 @@ typedef struct rc_shadow {
 #define RC_PF_BV 2u      /* -bv: back faces visible */
 #define RC_PF_IRRAD_I 4u /* -i: primary hits become diffuse irradiance meters */
 #define RC_PF_LOWDISC 8u /* -u-: first-hit samples stratified over the primary ray ids */
+#define RC_PF_SPREAD 16u /* -oe: a primary's first hemispheres tallied per division */
 typedef struct rc_params {
   rc_float4 av;     /* -av ambient value (rgb); w = -lw minimum ray weight */
   rc_float4 direct; /* -ds, -dj, -dt, -dc */

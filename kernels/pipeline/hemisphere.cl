@@ -127,12 +127,18 @@ static float3 rc_ambient(const rc_scene_args* S, rc_out* o, const rc_ray* r, flo
                  r->ambient_depth + 1u);
     }
   float budget = (float)P->as * wt + 0.5f;
-  if (P->as > 0u && o->nspawn - start == ns * ns && ns * ns > 49u && ns * ns <= 65536u &&
-      budget >= 9.0f) {
+  uint nsamp = o->nspawn - start;
+  bool more =
+      P->as > 0u && nsamp == ns * ns && ns * ns > 49u && ns * ns <= 65536u && budget >= 9.0f;
+  /* -oe: a primary's first hemispheres keep their divisions apart as well, with no budget, so
+   * the host has the spread of their values (the sensor's standard error). */
+  bool spread =
+      (P->flags & RC_PF_SPREAD) && r->ambient_depth == 0u && nsamp > 1u && nsamp <= 65536u;
+  if (more || spread) {
     o->cells = 1u;
-    uint b = min((uint)budget, RC_CELL_MAX_BUDGET);
+    uint b = more ? min((uint)budget, RC_CELL_MAX_BUDGET) : 0u;
     if (o->write)
-      for (uint k = 0; k < ns * ns; ++k)
+      for (uint k = 0; k < nsamp; ++k)
         o->spawned[start + k].cell = RC_CELL_FLAG | (which << 29) | (b << 16) | k;
   }
   return (float3)(0.0f);

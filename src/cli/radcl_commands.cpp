@@ -10,6 +10,8 @@ std::span<const Command> commands() {
        cmd_devices},
       {"calc", "evaluate .cal expressions (-f file, -e statements, -r rayinit.cal, -c OpenCL C)",
        cmd_calc},
+      {"cost", "what accuracy costs in time on your scene: a ladder of settings timed and scored",
+       cmd_cost},
       {"scene", "summarise a scene (octree or .rad files); --list prints every object", cmd_scene},
   };
   return kCommands;

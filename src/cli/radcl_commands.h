@@ -15,6 +15,7 @@ std::span<const Command> commands();
 
 int cmd_ambient(int argc, char** argv);
 int cmd_calc(int argc, char** argv);
+int cmd_cost(int argc, char** argv);
 int cmd_devices(int argc, char** argv);
 int cmd_scene(int argc, char** argv);
 

@@ -48,6 +48,7 @@ render::RenderSettings settings_from(const options::RtraceOptions& o) {
   if (spec.trace_mode())
     s.trace = spec.trace_sources ? render::RenderSettings::Trace::RaysAndShadows
                                  : render::RenderSettings::Trace::Rays;
+  s.std_error = spec.per_ray.find('e') != std::string::npos;
   return s;
 }
 
@@ -271,6 +272,7 @@ private:
       }
     }
     o.value = r.value;
+    o.std_error = r.std_error;
     o.point = o.origin;
     if (r.hit) {
       o.first_length = o.effective_length = o.unmirrored_length = r.t;

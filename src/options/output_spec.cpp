@@ -74,6 +74,12 @@ OutputSpec parse_output_spec(std::string_view spec) {
       os.ncomp += 1;
       os.cast_only = false;
       break;
+    case 'e': // radcl's own: the value's standard error, once per input ray
+      if (table != &os.per_ray) throw FatalError("-oe is not a traced ray's output");
+      *table += c;
+      os.ncomp += 3;
+      os.cast_only = false;
+      break;
     case '~':
       *table += c;
       break;
@@ -93,6 +99,10 @@ void check_output_spec(std::string_view spec, const OutputSpec& os, const Render
   for (char c : spec)
     if (inexact && (c == 'V' || c == 'W'))
       warning(std::string("-ot") + c + " accuracy depends on -aa 0 -as 0");
+  // The cache's error is a bias shared by neighbouring points, not a spread of samples.
+  if (os.per_ray.find('e') != std::string::npos && render.ambient_bounces > 0 &&
+      render.ambient_accuracy > 0)
+    throw FatalError("-oe requires -aa 0 (no irradiance cache)");
   const bool irrad = render.irradiance || immediate_irradiance;
   if (irrad && os.cast_only) throw FatalError("-I+ and -i+ options require some value output");
   for (char c : os.per_ray) {

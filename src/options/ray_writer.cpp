@@ -131,6 +131,9 @@ void append_record(std::string& out, std::string_view letters, const RayOutput& 
     case 'X':
       put_reals(out, &r.unmirrored_length, 1, format);
       break;
+    case 'e':
+      put_reals(out, r.std_error.data(), 3, format);
+      break;
     case '~':
       out += "~\t";
       break;

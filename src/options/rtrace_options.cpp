@@ -185,6 +185,9 @@ std::string format_rtrace_defaults(const RtraceOptions& o) {
     case 'X':
       s += " unreflect_length";
       break;
+    case 'e':
+      s += " std_error";
+      break;
     case 'v':
       s += " value";
       break;

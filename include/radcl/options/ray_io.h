@@ -32,7 +32,8 @@ struct OutputSpec {
 // Throws FatalError "empty output specification" / "unrecognized output option 'q'".
 OutputSpec parse_output_spec(std::string_view spec);
 
-// The checks rtrace makes once options are known: FatalError "-I+ and -i+ options require some
+// The checks rtrace makes once options are known: FatalError "-oe requires -aa 0 (no
+// irradiance cache)" (radcl's own letter); FatalError "-I+ and -i+ options require some
 // value output"; warnings "-oVW options require trace mode", "-orRxX options incompatible
 // with -I+ and -i+", "-otV accuracy depends on -aa 0 -as 0" (and -otW), in Radiance's order.
 void check_output_spec(std::string_view spec, const OutputSpec& os, const RenderOptions& render,
@@ -83,6 +84,7 @@ struct RayOutput {
   Vec3 unmirrored{0, 0, 0};         // x (Radiance: value - mirrored, computed in float)
   double mirrored_length = 1e10;    // R
   double unmirrored_length = 1e10;  // X
+  Vec3 std_error{0, 0, 0};          // e (radcl's own): the standard error of v
 
   // The record Radiance prints for a flush request or a ray that hit nothing, given the ray.
   static RayOutput empty(const Vec3& origin, const Vec3& direction);

@@ -75,13 +75,14 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
   p.seed = st.seed;
   p.lr = st.lr;
   p.flags = (st.dv ? RC_PF_DV : 0u) | (st.bv ? RC_PF_BV : 0u) |
-            (st.irradiance_i ? RC_PF_IRRAD_I : 0u) | (st.low_discrepancy ? RC_PF_LOWDISC : 0u);
+            (st.irradiance_i ? RC_PF_IRRAD_I : 0u) | (st.low_discrepancy ? RC_PF_LOWDISC : 0u) |
+            (st.std_error ? RC_PF_SPREAD : 0u);
   p.ab = static_cast<std::uint32_t>(st.ab);
   p.nsources = static_cast<std::uint32_t>(cs.sources.sources.size());
   p.irradiance_material = cs.irradiance_material;
   p.ad = static_cast<std::uint32_t>(std::max(0, st.ad));
   bool super = st.as > 0 && st.ab > 0 && st.ad > 0;
-  tree = super || st.trace != RenderSettings::Trace::Off;
+  tree = super || st.trace != RenderSettings::Trace::Off || st.std_error;
   p.as = super ? static_cast<std::uint32_t>(st.as) : 0u;
   ray_eps = p.spec.z;
   cache_records = st.ambient_records;

@@ -19,8 +19,9 @@ constexpr double kFtiny = 1e-6;
 
 } // namespace
 
-void TallyTree::reset(std::size_t primaries, std::uint32_t seed, bool trace) {
+void TallyTree::reset(std::size_t primaries, std::uint32_t seed, bool trace, bool spread) {
   nodes_.assign(primaries, fresh_node(Kind::Primary, RC_NONE, 0));
+  variance_.assign(spread ? primaries : 0, Vec3d{});
   hemis_.clear();
   requests_.clear();
   traced_.clear();
@@ -92,6 +93,7 @@ void TallyTree::make_hemi(const rc_ray& ray, const rc_hit& hit, rc_ray* children
   h.which = RC_CELL_WHICH(c.cell);
   h.ns = static_cast<std::uint32_t>(std::lround(std::sqrt(static_cast<double>(m))));
   h.budget = RC_CELL_BUDGET(c.cell);
+  h.ncells = static_cast<std::uint32_t>(m);
   h.second = false;
   const float pc[3] = {ray.coef.x, ray.coef.y, ray.coef.z};
   const float cc[3] = {c.coef.x, c.coef.y, c.coef.z};
@@ -403,6 +405,70 @@ bool TallyTree::allocate(const Hemi& h, std::vector<std::uint32_t>& counts) cons
   return any;
 }
 
+std::uint32_t TallyTree::primary_of(std::uint32_t node) const {
+  while (nodes_[node].kind != Kind::Primary) // trace mode: rays between it and the primary
+    node = nodes_[node].parent;
+  return node;
+}
+
+// The divisions' values are independent draws of stratified sampling, each with a mean of its
+// own, so their plain spread would count the hemisphere's variation across divisions as noise.
+// The collapsed-strata estimate pairs neighbours instead: a group of g neighbouring values
+// contributes g / (g - 1) times its squared deviations from its mean, which estimates the sum
+// of their variances, too high by the differences of the neighbours' means. Pairs run along
+// the grid's rows (a third joins the last pair of an odd row) or along its columns, whichever
+// gives less: a sharp edge in the hemisphere (a window, a sunlit patch) that one way crosses
+// many pairs is crossed by fewer the other way (office_clear at -ab 2: the estimate 1.7 times
+// the draws' spread along rows alone, 1.1 times with the choice).
+// A super-sampled division (-as) enters with its samples' mean. Radiance puts those samples
+// where neighbours differ most, so there the pairs' differences are mostly the divisions'
+// different means and the estimate stays high (office_clear, -ab 1 -av .5 -as 256: 1.6 times
+// the draws' spread); estimating those divisions from their own samples instead came out 20%
+// low, as the choice of divisions follows the first samples' values (docs/options.md).
+void TallyTree::add_spread(const Hemi& h, std::uint32_t parent) {
+  const auto value = [&](std::uint32_t c, int i) {
+    const Node& n = nodes_[h.first_cell + c];
+    return n.sum[i] / n.count;
+  };
+  // The estimate over lines of `len` values, value k of line l at at(l, k).
+  const auto collapsed = [&](std::uint32_t lines, std::uint32_t len, auto&& at) {
+    Vec3d var{};
+    for (std::uint32_t l = 0; l < lines; ++l)
+      for (std::uint32_t a = 0; a + 1 < len; a += 2) {
+        const std::uint32_t g = a + 3 == len ? 3 : 2;
+        for (int i = 0; i < 3; ++i) {
+          double mean = 0, dev = 0;
+          for (std::uint32_t k = 0; k < g; ++k)
+            mean += value(at(l, a + k), i) / g;
+          for (std::uint32_t k = 0; k < g; ++k)
+            dev += (value(at(l, a + k), i) - mean) * (value(at(l, a + k), i) - mean);
+          var[i] += dev * g / (g - 1);
+        }
+        if (g == 3) break;
+      }
+    return var;
+  };
+  const std::uint32_t ns = h.ns;
+  Vec3d var;
+  if (ns >= 2 && h.ncells == ns * ns) {
+    const Vec3d rows =
+        collapsed(ns, ns, [ns](std::uint32_t l, std::uint32_t k) { return l * ns + k; });
+    const Vec3d cols =
+        collapsed(ns, ns, [ns](std::uint32_t l, std::uint32_t k) { return k * ns + l; });
+    var = bright(rows) <= bright(cols) ? rows : cols;
+  } else { // -lw dropped samples: the ones there, in order
+    var = collapsed(1, h.ncells, [](std::uint32_t, std::uint32_t k) { return k; });
+  }
+  Vec3d& v = variance_[primary_of(parent)];
+  for (int i = 0; i < 3; ++i)
+    v[i] += var[i];
+}
+
+TallyTree::Vec3d TallyTree::std_error(std::size_t primary) const {
+  const Vec3d& v = variance_.at(primary);
+  return {std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2])};
+}
+
 void TallyTree::settle(std::uint32_t id, std::vector<SuperRequest>& requests) {
   for (;;) {
     Node& n = nodes_[id];
@@ -434,7 +500,7 @@ void TallyTree::settle(std::uint32_t id, std::vector<SuperRequest>& requests) {
     }
     // Resolved: the sum of the divisions' averages goes to the parent.
     Vec3d v{}, mv{};
-    for (std::uint32_t c = 0; c < h.ns * h.ns; ++c) {
+    for (std::uint32_t c = 0; c < h.ncells; ++c) {
       const Node& cell = nodes_[h.first_cell + c];
       if (cell.count == 1) { // x / 1 is x, bit for bit: no division for most cells
         for (int i = 0; i < 3; ++i) {
@@ -449,6 +515,7 @@ void TallyTree::settle(std::uint32_t id, std::vector<SuperRequest>& requests) {
       }
     }
     std::uint32_t parent = n.parent;
+    if (!variance_.empty() && h.ray.ambient_depth == 0) add_spread(h, parent);
     Node& p = nodes_[parent];
     for (int i = 0; i < 3; ++i) {
       p.sum[i] += v[i];

@@ -107,7 +107,8 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   batch.results = res;
   batch.root_depth.assign(prim.size(), 0);
   if (tree) {
-    tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off);
+    tally.reset(prim.size(), settings.seed, settings.trace != RenderSettings::Trace::Off,
+                settings.std_error);
     tally.set_profile(&prof);
   }
   start_primaries(prim, res, queue, first_index);
@@ -118,6 +119,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   const auto finish = [&](std::size_t i) {
     res[i].value = tree ? tally.sum(i) : batch.sums[i];
     res[i].mirrored = tree ? tally.mirrored(i) : batch.mirrored_sums[i];
+    if (settings.std_error) res[i].std_error = tally.std_error(i);
   };
   if (settings.trace != RenderSettings::Trace::Off) {
     for (std::size_t i = 0; i < prim.size(); ++i) {

@@ -68,6 +68,10 @@ struct RenderSettings {
   // too (-oT).
   enum class Trace { Off, Rays, RaysAndShadows };
   Trace trace = Trace::Off;
+  // rtrace's -oe (radcl's own): each primary's standard error from the spread of its first
+  // hemispheres' divisions (PrimaryResult::std_error). Values are those without it, up to the
+  // order their double sums are added in.
+  bool std_error = false;
   // How the pipeline runs (the same outputs whatever it says, leak_test aside).
   PipelineTuning tuning;
 };
@@ -114,6 +118,9 @@ struct PrimaryResult {
   // frame of `normal`: normal + pert, made unit, is the perturbed normal (rtrace's -on).
   Vec3d pert{};
   std::vector<TracedRay> traced; // trace mode: the tree in post-order (children first)
+  // RenderSettings::std_error: the standard error of `value` (rgb) as the spread of the
+  // hemisphere samples at the first ambient bounce estimates it (0 where none was sampled).
+  Vec3d std_error{};
 };
 
 // Rays traced so far (what Embree was asked), for reports and benchmarks.

@@ -5,6 +5,9 @@
 // finished too, the hemisphere adds the sum of its divisions' averages into its parent.
 // In rtrace's trace modes (-ot/-oT) every ray gets a node of its own, so each ray's value is
 // known when its subtree has finished, and the tree can be printed in Radiance's order.
+// With -oe a primary's first hemispheres (those at ambient depth 0) keep their divisions apart
+// whether or not they are super-sampled, and the spread of the divisions' values gives the
+// primary's standard error.
 #pragma once
 
 #include <array>
@@ -51,8 +54,9 @@ public:
     std::vector<std::uint32_t> kids; // in the order they were made
   };
 
-  // Primaries 0..n-1, each waiting for its own ray; `trace` gives every ray a node.
-  void reset(std::size_t primaries, std::uint32_t seed, bool trace = false);
+  // Primaries 0..n-1, each waiting for its own ray; `trace` gives every ray a node; `spread`
+  // keeps each primary's standard error.
+  void reset(std::size_t primaries, std::uint32_t seed, bool trace = false, bool spread = false);
 
   // A shaded ray's total and children: marks hemisphere samples' tallies (children are
   // rewritten in place), counts the children as pending, retires the ray. In trace mode the
@@ -84,6 +88,10 @@ public:
   std::vector<std::pair<const Traced*, int>> traced(std::size_t primary) const;
   const Vec3d& node_sum(std::uint32_t node) const { return nodes_[node].sum; }
   const Vec3d& mirrored(std::size_t primary) const { return nodes_[primary].msum; }
+  // The primary's standard error (reset's `spread`): the square root of its first
+  // hemispheres' variances, each estimated from pairs of neighbouring divisions (see
+  // spread_variance in the .cpp).
+  Vec3d std_error(std::size_t primary) const;
   std::uint64_t hemispheres() const { return hemis_.size(); }
 
 private:
@@ -107,7 +115,8 @@ private:
     rc_hit hit;
     Vec3d acoef; // Radiance's hp->acoef: the ambient coefficient over ns * ns
     std::uint32_t node, first_cell, ns, budget, which;
-    bool second; // the super-sample decision has been made
+    std::uint32_t ncells; // ns * ns, or fewer where -lw dropped samples (then no budget)
+    bool second;          // the super-sample decision has been made
   };
   void add(std::uint32_t node, const rc_float4& c, bool mirrored);
   // The hemisphere whose first samples begin at children[k] (m of them) of `ray`: its node at
@@ -129,6 +138,10 @@ private:
   // Radiance's super-sample counts of each division into `counts` (ns * ns); whether any
   // (`counts` is left as it was when none).
   bool allocate(const Hemi& h, std::vector<std::uint32_t>& counts) const;
+  // A resolved hemisphere at ambient depth 0 adds its variance to its primary's.
+  void add_spread(const Hemi& h, std::uint32_t parent);
+  // The primary a node belongs to.
+  std::uint32_t primary_of(std::uint32_t node) const;
 
   std::vector<Node, NoInit<Node>> nodes_;
   std::vector<Hemi, NoInit<Hemi>> hemis_;
@@ -136,6 +149,8 @@ private:
   std::vector<Traced> traced_;
   bool trace_ = false;
   std::uint32_t seed_ = 0;
+  std::vector<Vec3d> variance_; // per primary, with spread
+
   PhaseProfile* prof_ = nullptr;
 };
 
