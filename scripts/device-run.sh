@@ -11,8 +11,9 @@
 #   peers     tests/bench/peers.sh on the GPU against Radiance -n (all cores) in the same run
 #             (P1-P5; needs Radiance bundled), its table and chart under $OUT
 #   peers-cpu the same with radcl on PoCL over every core (PEERS_ARGS=--small: the 2-core cases)
-#   cost      tests/bench/accuracy_cost.sh on the GPU: time and error along a ladder of ambient
-#             settings, Radiance alongside when it was bundled (BENCH_REPEAT default 3)
+#   cost      tests/bench/cost_study.sh on the GPU: radcl cost on office_clear, luminaires, the
+#             deep plan and the sphere, Radiance's rtrace -n (all cores) beside it when it was
+#             bundled; the tables and charts under $OUT (SCENES: a subset)
 #   rounds    office_clear's cache build on the GPU, its rounds' time by size
 #   cold      a first run on a machine that has compiled nothing (radcl's program cache and
 #             NVIDIA's ComputeCache emptied): one sensor, compiling the scene's program, then
@@ -137,7 +138,7 @@ for what in "$@"; do
   devices) RADCL_DEVICE=nvidia "$b/bin/radcl" devices --check ;;
   tests) RADCL_DEVICE=nvidia tests ;;
   bench) RADCL_DEVICE=nvidia BENCH_REPEAT=${BENCH_REPEAT:-3} "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_gpu.txt" ;;
-  cost) RADCL_DEVICE=nvidia BENCH_REPEAT=${BENCH_REPEAT:-3} "$root/tests/bench/accuracy_cost.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/cost_gpu.txt" ;;
+  cost) RADCL_DEVICE=nvidia OUT_DIR=$out "$root/tests/bench/cost_study.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/cost_gpu.txt" ;;
   peers) RADCL_DEVICE=nvidia PEERS_OUT=$out "$root/tests/bench/peers.sh" ${PEERS_ARGS:-} "$b/build" 2>&1 | tee "$out/peers_gpu.txt" ;;
   peers-cpu) RADCL_DEVICE=pocl PEERS_OUT=$out/pocl "$root/tests/bench/peers.sh" ${PEERS_ARGS:-} "$b/build" 2>&1 | tee "$out/peers_pocl.txt" ;;
   bench-cpu) RADCL_DEVICE=pocl "$root/tests/bench/ambient_cache.sh" "$b/build" "$(nproc)" 2>&1 | tee "$out/bench_pocl.txt" ;;

@@ -52,6 +52,8 @@ const Case kCases[] = {
     {"@B@/rtrace -h -f office_clear.oct", "", 1, "command line error at '-f'"},
     {"@B@/rtrace -h -fz office_clear.oct", "", 1, "command line error at '-fz'"},
     {"@B@/rtrace -h -ozz office_clear.oct", "", 1, "unrecognized output option 'z'"},
+    {"@B@/rtrace -h -ab 1 -ove office_clear.oct", "", 1, "-oe requires -aa 0"},
+    {"@B@/rtrace -h -ab 1 -aa 0 -ovte office_clear.oct", "", 1, "-oe is not a traced ray's output"},
     {"@B@/rtrace -h -ap x.pm office_clear.oct", "", 1, ""},
     // views
     {"@B@/rpict -vf nosuch.vf office_clear.oct", "", 1, "cannot open view file \"nosuch.vf\""},

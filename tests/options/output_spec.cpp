@@ -52,6 +52,29 @@ TEST(OutputSpec, TraceMode) {
   EXPECT_EQ(s.per_traced, "o");
 }
 
+// radcl's own letter e: the value's standard error, three numbers, once per input ray.
+TEST(OutputSpec, StandardError) {
+  OutputSpec s = parse_output_spec("ve");
+  EXPECT_EQ(s.per_ray, "ve");
+  EXPECT_EQ(s.ncomp, 6);
+  EXPECT_FALSE(parse_output_spec("e").cast_only);
+  EXPECT_EQ(parse_output_spec("etv").per_ray, "e");
+  EXPECT_EQ(error_of("vte"), "-oe is not a traced ray's output");
+  RenderOptions r = RenderOptions::rtrace_defaults();
+  r.ambient_bounces = 1; // -aa 0.1: the cache
+  try {
+    check_output_spec("ve", parse_output_spec("ve"), r, true);
+    ADD_FAILURE() << "-oe with the cache";
+  } catch (const radcl::FatalError& e) {
+    EXPECT_STREQ(e.what(), "-oe requires -aa 0 (no irradiance cache)");
+  }
+  r.ambient_accuracy = 0;
+  EXPECT_NO_THROW(check_output_spec("ve", parse_output_spec("ve"), r, true));
+  r.ambient_accuracy = 0.1;
+  r.ambient_bounces = 0; // no ambient bounce: no cache either
+  EXPECT_NO_THROW(check_output_spec("ve", parse_output_spec("ve"), r, true));
+}
+
 TEST(OutputSpec, Errors) {
   EXPECT_EQ(error_of(""), "empty output specification");
   EXPECT_EQ(error_of("vq"), "unrecognized output option 'q'");
