@@ -109,6 +109,49 @@ TEST(GoldenCostStudy, ConvergedReferenceMeetsTheExactAnswer) {
   EXPECT_LE(cost::summarise(rel).p95, 0.015);
 }
 
+// Pictures: rpict's renders scored in blocks against a reference made of -aa 0 renders (two at
+// least, for their spread), the table and a recommendation.
+TEST(GoldenCostStudy, Pictures) {
+  test::TempFolder t("cost");
+  const test::ProgramRun r =
+      test::Program("radcl").run("cost -ladder lw -ab 1 -vf cornell.vf -x 16 -y 16 -block 4 "
+                                 "-ref-ab 1 -ref-ad 256 -ref-se 5% -target 20% -svg " +
+                                 t.str() + "/pic.svg cornell.oct");
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("cornell.oct, 16 blocks"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("renders of radcl rpict -aa 0 -ps 1 -ab 1 -ad 256"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("recommended for rms <= 20.00%"), std::string::npos) << r.out;
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file((t / "pic.svg").c_str()));
+  EXPECT_EQ(doc.select_nodes("//circle[@class='run']").size(), 2u);
+  EXPECT_NE(test::Program("radcl").run("cost -vf cornell.vf -save-ref x cornell.oct").rc, 0);
+}
+
+// On a terminal (here one made by script(1)) a progress line says what runs and the time left;
+// written to a pipe, the output holds no such line.
+TEST(GoldenCostStudy, ProgressOnATerminal) {
+  test::TempFolder t("cost");
+  test::write_file(t / "grid.pts", head("scenes/sphere_wall.pts", 6));
+  const std::string cost = test::bin_dir() +
+                           "/radcl cost -ladder lw -ab 1 -ref-ab 1 -ref-ad 64 "
+                           "-ref-se 50% -n 2 -I sphere.oct < " +
+                           t.str() + "/grid.pts";
+  std::string out;
+  ASSERT_EQ(test::run_command(
+                "cd " + test::data("scenes") + " && script -qec '" + cost + "' /dev/null", &out),
+            0)
+      << out;
+  EXPECT_NE(out.find("so far, about "), std::string::npos) << out; // the time left, once known
+  EXPECT_NE(out.find(" left  radcl -ab 1 -aa 0 -ad 1024"), std::string::npos) << out;
+  const test::ProgramRun piped = test::Program("radcl")
+                                     .input(head("scenes/sphere_wall.pts", 6))
+                                     .run("cost -ladder lw -ab 1 -ref-ab 1 -ref-ad 64 -ref-se 50% "
+                                          "-n 2 -I sphere.oct");
+  EXPECT_EQ(piped.rc, 0);
+  EXPECT_EQ(piped.err.find("so far"), std::string::npos) << piped.err;
+}
+
 TEST(GoldenCostStudy, BadInput) {
   const auto fails = [](const std::string& args, const std::string& message) {
     const test::ProgramRun r =
