@@ -162,17 +162,19 @@ int cmd_cost(int argc, char** argv) {
     std::ofstream s(o.sensors, std::ios::binary);
     s << std::cin.rdbuf();
     if (!s.flush()) throw FatalError("cannot store the sensors");
-    // The warm-up runs take the first sensor: a line, or a binary record of 6 numbers.
+    // The warm-up runs take the first 256 sensors: lines, or binary records of 6 numbers.
     std::ifstream all(o.sensors, std::ios::binary);
     std::string first;
     if (in_format == 'a') {
-      std::getline(all, first);
-      first += "\n";
+      std::string line;
+      for (int k = 0; k < 256 && std::getline(all, line); ++k)
+        first += line + "\n";
     } else {
-      first.resize(in_format == 'f' ? 24 : 48);
+      first.resize(256 * (in_format == 'f' ? 24 : 48));
       all.read(first.data(), static_cast<std::streamsize>(first.size()));
+      first.resize(static_cast<std::size_t>(all.gcount()));
     }
-    std::ofstream(o.work + "/first-sensor", std::ios::binary) << first;
+    std::ofstream(o.work + "/first-sensors", std::ios::binary) << first;
   }
   CostProgress bar;
   const cost::StudyReport rep = cost::run_study(

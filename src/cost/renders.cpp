@@ -18,11 +18,11 @@ RenderOutput render(const StudyOptions& o, const RenderJob& job) {
     r.argv = {bin + "/rpict"};
     r.argv.insert(r.argv.end(), o.pass.begin(), o.pass.end());
     r.argv.insert(r.argv.end(), o.view.begin(), o.view.end());
-    if (job.warm_up) r.argv.insert(r.argv.end(), {"-x", "8", "-y", "8"}); // the last wins
+    if (job.warm_up) r.argv.insert(r.argv.end(), {"-x", "32", "-y", "32"}); // the last wins
   } else {
     r.argv = {bin + "/rtrace", "-h"};
     r.argv.insert(r.argv.end(), o.pass.begin(), o.pass.end());
-    r.in = job.warm_up ? o.work + "/first-sensor" : o.sensors;
+    r.in = job.warm_up ? o.work + "/first-sensors" : o.sensors;
   }
   r.argv.insert(r.argv.end(), job.settings.begin(), job.settings.end());
   if (!o.pictures()) {

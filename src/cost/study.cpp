@@ -179,8 +179,10 @@ StudyReport run_study(const StudyOptions& o, const ProgressFn& progress) {
     if (!o.radiance_bin.empty()) todo.emplace_back("Radiance", &s);
   }
   // radcl compiles each scene's programs once per set of settings and keeps them (its program
-  // cache): a first run of every step on one sensor (a tiny picture), untimed, so the timed
-  // runs are what a user's second run of those settings costs.
+  // cache; PoCL compiles again for each work-group size it meets): a first run of every step
+  // on 256 sensors (a 32 x 32 picture), untimed, so the timed runs are what a user's second run
+  // of those settings costs (with one sensor, PoCL's first timed run on 2 cores still took 1.4
+  // s more than its second).
   if (progress) progress("compiling radcl's programs for each step", 0, -1);
   for (const Step& s : o.ladder) {
     RenderJob job;

@@ -1,6 +1,7 @@
 // The BVH over irradiance-cache records (ambient/cache.h): every record in exactly one
 // leaf, every record's region inside the boxes of the nodes above it, and skip links that
 // visit each subtree once; the minimum radius as Radiance's setambres().
+#include "radcl/luminance.h"
 #include <cmath>
 #include <gtest/gtest.h>
 #include <random>
@@ -200,7 +201,7 @@ TEST(AmbientValueWeight, AveragesInTheLogDomain) {
     EXPECT_NEAR(v[c], 2 * f, 1e-12);
   // A coloured -av keeps its colour, scaled by its brightness's new average.
   v = ambient::averaged_ambient_value({1, 0.5, 0.25}, 1, recs);
-  double l = 0.265074126 * 1 + 0.670114631 * 0.5 + 0.064811243 * 0.25;
+  double l = radcl::bright(1.0, 0.5, 0.25);
   f = std::exp((std::log(l) + std::log(4.0) + 2 * k) / 3) / l;
   EXPECT_NEAR(v[0], f, 1e-12);
   EXPECT_NEAR(v[1], 0.5 * f, 1e-12);

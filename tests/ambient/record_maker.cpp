@@ -1,9 +1,11 @@
-// Records made from sampled hemispheres (render/ambient_record.h, kernels/ambient/ambient_record.cl)
-// against a double-precision reference written here from the derivation in docs/cache-internals.md
+// Records made from sampled hemispheres (render/ambient_record.h,
+// kernels/ambient/ambient_record.cl) against a double-precision reference written here from the
+// derivation in docs/cache-internals.md
 // ("Making a record"): per-triangle sums of full 3x3 edge terms, as Radiance assembles them,
 // where the kernel gathers per edge in the tangent frame. The reference's gradient and Hessian
 // are checked against finite differences of the mesh's irradiance (Lambert's formula), and the
 // kernel against closed forms for a sphere, a ceiling, a half-bright sky and a wall.
+#include "radcl/luminance.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,7 +49,7 @@ D3 f3(const rc_float4& v) {
   return {v.x, v.y, v.z};
 }
 double bright(D3 c) {
-  return 0.265074126 * c[0] + 0.670114631 * c[1] + 0.064811243 * c[2];
+  return radcl::bright(c);
 }
 
 using M3 = std::array<D3, 3>;

@@ -1,6 +1,7 @@
 // rtrace end to end on materials_plain (no function files needed) against Radiance 5.4a's
 // stored outputs: geometric fields and names of -ooodLpnNsmM, values of -ov with -ab 0, binary
 // -ff/-fd/-fac layouts, and the header written without -h.
+#include "radcl/luminance.h"
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -47,7 +48,7 @@ std::vector<std::vector<std::string>> rows(const std::string& text) {
 }
 
 double lum(double r, double g, double b) {
-  return 0.265 * r + 0.670 * g + 0.065 * b;
+  return radcl::bright(r, g, b);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // rpict end to end against Radiance 5.4a's pictures: deterministic direct-light views compared
 // on 8x8-pixel blocks (sub-pixel jitter makes edges differ), and the header lines.
+#include "radcl/luminance.h"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -37,7 +38,7 @@ Rendered render(const std::string& args, const std::string& octree, const std::s
 }
 
 double lum(const radcl::image::Color& c) {
-  return 0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2];
+  return radcl::bright(c);
 }
 
 // Mean luminance of each 8x8 block.

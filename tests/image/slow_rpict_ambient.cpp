@@ -6,6 +6,7 @@
 // 128 x 128 and 96 x 96 were a fifth of the suite's time on two cores). -as 0: super-sampling
 // only moves noise around (tests/render/pipeline/ambient_supersampling.cpp checks it) and would
 // double these runs.
+#include "radcl/luminance.h"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -42,7 +43,7 @@ void rpict(const std::string& args, const std::string& octree) {
 double mean_luminance(const std::vector<radcl::image::Color>& c) {
   double s = 0;
   for (const auto& p : c)
-    s += 0.265 * p[0] + 0.670 * p[1] + 0.065 * p[2];
+    s += radcl::bright(p);
   return s / c.size();
 }
 

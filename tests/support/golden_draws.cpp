@@ -1,4 +1,5 @@
 #include "golden_draws.h"
+#include "radcl/luminance.h"
 
 #include <array>
 #include <cmath>
@@ -13,7 +14,7 @@ namespace radcl::test {
 namespace {
 
 double lum(const std::array<double, 3>& c) {
-  return 0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2];
+  return radcl::bright(c);
 }
 
 std::pair<double, double> mean_var(const std::vector<double>& v) {

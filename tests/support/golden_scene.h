@@ -4,6 +4,7 @@
 // Radiance's runs.
 #pragma once
 
+#include "radcl/luminance.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -27,7 +28,7 @@ namespace radcl::test::golden {
 using Rgb = std::array<double, 3>;
 
 inline double lum(const Rgb& c) {
-  return 0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2];
+  return radcl::bright(c);
 }
 
 inline std::vector<double> lums(const std::string& file) {

@@ -1,6 +1,7 @@
 // Readers for the reference set's text files (sensor grids, rtrace outputs).
 #pragma once
 
+#include "radcl/luminance.h"
 #include <array>
 #include <string>
 #include <vector>
@@ -16,7 +17,7 @@ std::vector<std::array<double, 3>> read_rgb(const std::string& path);
 
 // Illuminance-style scalar of an RGB triple (Radiance's 179 lm/W luminous efficacy weights).
 inline double lux(const std::array<double, 3>& c) {
-  return 179.0 * (0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2]);
+  return 179.0 * radcl::bright(c);
 }
 
 } // namespace radcl::test

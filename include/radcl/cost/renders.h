@@ -16,7 +16,7 @@ struct RenderJob {
   std::vector<std::string> settings; // the step's options, after the user's
   std::uint32_t seed = 1;            // RADCL_SEED
   bool std_error = false;            // sensors: rtrace -oe as well (radcl only)
-  bool warm_up = false;              // one sensor, or an 8 x 8 picture; nothing read back
+  bool warm_up = false; // the first 256 sensors, or a 32 x 32 picture; nothing read back
 };
 
 struct RenderOutput {

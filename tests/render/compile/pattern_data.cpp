@@ -1,6 +1,7 @@
 // brightdata, colordata, texdata and colorpict against hand-computed interpolation
 // (scene-format.md §4.1): a glowing floor (z = 0) seen straight down shows the pattern's value
 // itself; texdata tilts a plastic floor's normal under a sun overhead.
+#include "radcl/luminance.h"
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -169,7 +170,7 @@ TEST_F(PatternData, ColorpictCoordinates) {
   }
   // grey(r, g, b) takes three parameters: every channel gets the grey of the pixel.
   auto g = glow("void colorpict p 7 grey grey grey p.hdr . Px Py 0 0", "p", {{0.75, 1}});
-  double grey = 0.265074126 * c(1)[0] + 0.670114631 * c(1)[1] + 0.064811243 * c(1)[2];
+  double grey = radcl::bright(c(1));
   EXPECT_NEAR(g[0][0], grey, 1e-5 * grey);
   EXPECT_NEAR(g[0][2], grey, 1e-5 * grey);
 }

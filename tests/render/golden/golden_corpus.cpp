@@ -7,6 +7,7 @@
 // means within 4.5 (about 1 in 2,000 by chance for each of the 128 groups at 14 degrees of
 // freedom; 3.25 at most on 2026-12-07). A difference found is fixed at its cause or listed in
 // kKnown with its reason (docs/differences.md).
+#include "radcl/luminance.h"
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -53,7 +54,7 @@ std::vector<Scene> index() {
 }
 
 double lum(const std::vector<double>& row) {
-  return 0.265 * row[0] + 0.670 * row[1] + 0.065 * row[2];
+  return radcl::bright(row);
 }
 
 // Group means of each draw: out[g][k] for group g (0 near, 1 far) and draw k.

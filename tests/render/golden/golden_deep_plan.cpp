@@ -6,6 +6,7 @@
 // crowds the samples towards the horizon, where all of this floor's light comes from. radcl samples
 // each division uniformly, as the integral asks (docs/differences.md, "Deep plans without the
 // cache").
+#include "radcl/luminance.h"
 #include <cmath>
 #include <gtest/gtest.h>
 #include <string>
@@ -37,8 +38,7 @@ std::vector<double> grid_means(const render::RenderSettings& st, int reps) {
   EXPECT_EQ(chdir(cwd), 0);
   std::vector<double> means(reps, 0.0);
   for (std::size_t i = 0; i < res.size(); ++i)
-    means[i / grid.size()] +=
-        (0.265 * res[i].value[0] + 0.670 * res[i].value[1] + 0.065 * res[i].value[2]) / grid.size();
+    means[i / grid.size()] += radcl::bright(res[i].value) / grid.size();
   return means;
 }
 

@@ -1,6 +1,7 @@
 // The materials scene under a uniform sky and a sun (-ab 0, deterministic direct settings)
 // against Radiance 5.4a: plastic, metal, trans, glass, dielectric, mirror, glow and the
 // surface types, seen through the camera rays.
+#include "radcl/luminance.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -49,7 +50,7 @@ Rendered render_rays() {
 }
 
 double luminance(const std::array<double, 3>& c) {
-  return 0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2];
+  return radcl::bright(c);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 // land where Radiance's rpict puts them only if each triangle is shaded with its interpolated
 // normal, as Radiance's o_mesh does: with the facets' own normals the picture's relative RMS
 // difference from Radiance's is 38 (the reflections spread over whole facets).
+#include "radcl/luminance.h"
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -22,7 +23,7 @@ namespace {
 std::vector<double> luminance(const image::Picture& p) {
   std::vector<double> v;
   for (const auto& c : p.colors())
-    v.push_back(0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2]);
+    v.push_back(radcl::bright(c));
   return v;
 }
 

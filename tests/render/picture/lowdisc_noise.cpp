@@ -6,6 +6,7 @@
 // independent -u+ picture of the same view has expectation zero everywhere, so its
 // correlation from pixel to pixel is the noise's own: beyond the neighbouring pixel (where the
 // pixel jitter and the sample footprint overlap) it must vanish at every lag along x and y.
+#include "radcl/luminance.h"
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -38,7 +39,7 @@ std::vector<double> render(const std::string& u, const std::string& extra, std::
   if (p.width != kW || p.height != kH) return {};
   std::vector<double> v;
   for (const auto& c : p.colors())
-    v.push_back(0.265 * c[0] + 0.670 * c[1] + 0.065 * c[2]);
+    v.push_back(radcl::bright(c));
   return v;
 }
 

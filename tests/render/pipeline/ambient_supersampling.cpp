@@ -1,5 +1,6 @@
 // -as with -aa 0: Radiance's super-sampling of a hemisphere's high-variance divisions, done in
 // a second pass once the first samples' values are known (render/pipeline/tally_tree.h).
+#include "radcl/luminance.h"
 #include <cmath>
 #include <cstdlib>
 #include <gtest/gtest.h>
@@ -48,7 +49,7 @@ SphereRun meters(const std::string& octree, const std::string& pts, int ab, int 
   EXPECT_EQ(chdir(cwd), 0);
   double s = 0, ss = 0;
   for (const auto& p : run.res) {
-    double v = 0.265 * p.value[0] + 0.670 * p.value[1] + 0.065 * p.value[2];
+    double v = radcl::bright(p.value);
     s += v;
     ss += v * v;
   }
