@@ -28,12 +28,19 @@ grep -v '^#' "$data/results/deep_plan_exact.txt" | awk '{ print $1, $1, $1 }' > 
 awk '{ print 4.2243111457229805, 4.2243111457229805, 4.2243111457229805 }' \
   "$data/scenes/sphere_wall.pts" > "$work/sphere.txt"
 
+# Radiance reads octrees only: the deep plan's is made by its oconv (radcl reads either).
+deep=deep_plan.rad
+if [ -n "${RADIANCE_BIN:-}" ]; then
+  (cd "$data/scenes" && "$RADIANCE_BIN/oconv" deep_plan.rad > "$work/deep_plan.oct")
+  deep=$work/deep_plan.oct
+fi
+
 for s in ${SCENES:-office_clear luminaires deep_plan sphere}; do
   case $s in
     office_clear) args=(-ab 5 -ref "$data/results/office_clear_mc8.txt" office_clear.oct) grid=office_grid.pts ;;
     luminaires) args=(-ab 5 -ref "$data/results/luminaires_mc7.txt" luminaires.oct) grid=luminaires_grid.pts ;;
     # Exact answers at one -ab: the ladder keeps to it.
-    deep_plan) args=(-ab 2 -ladder cache,mc,lw -ref "$work/deep_plan.txt" deep_plan.rad) grid=deep_plan_grid.pts ;;
+    deep_plan) args=(-ab 2 -ladder cache,mc,lw -ref "$work/deep_plan.txt" "$deep") grid=deep_plan_grid.pts ;;
     sphere) args=(-ab 4 -ladder cache,mc,lw -ref "$work/sphere.txt" sphere.oct) grid=sphere_wall.pts ;;
     *) echo "cost_study.sh: unknown scene $s" >&2; exit 2 ;;
   esac
