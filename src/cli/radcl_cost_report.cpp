@@ -1,6 +1,7 @@
 #include "cost_report.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <unistd.h>
 
@@ -69,8 +70,9 @@ void CostProgress::clear() {
 void write_report(const cost::StudyOptions& o, const cost::StudyReport& r, const CostOutputs& out) {
   const char* unit = o.pictures() ? "blocks" : "sensors";
   const std::string metric = cost::metric_name(o.metric);
+  const std::string scene = std::filesystem::path(o.octree).filename().string();
   std::printf("# radcl cost: %s, %zu %s; error: relative luminance error per %s, judged by %s\n",
-              o.octree.c_str(), r.reference.elements, unit, o.pictures() ? "block" : "sensor",
+              scene.c_str(), r.reference.elements, unit, o.pictures() ? "block" : "sensor",
               metric.c_str());
   std::printf("# reference: %s", r.reference.how.c_str());
   if (r.reference.se_p95 > 0)
@@ -124,7 +126,7 @@ void write_report(const cost::StudyOptions& o, const cost::StudyReport& r, const
   }
   if (!out.svg.empty()) {
     cost::Chart c;
-    c.title = "What accuracy costs: " + o.octree;
+    c.title = "What accuracy costs: " + scene;
     c.y_label = metric + " relative error per " + (o.pictures() ? "block" : "sensor");
     c.target = o.target;
     for (const char* who : {"radcl", "Radiance"}) {
