@@ -4,7 +4,6 @@
 #include <chrono>
 #include <fstream>
 #include <map>
-#include <numeric>
 #include <sstream>
 
 #include "radcl/cost/pool.h"

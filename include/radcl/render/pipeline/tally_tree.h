@@ -90,7 +90,7 @@ public:
   const Vec3d& mirrored(std::size_t primary) const { return nodes_[primary].msum; }
   // The primary's standard error (reset's `spread`): the square root of its first
   // hemispheres' variances, each estimated from pairs of neighbouring divisions (see
-  // spread_variance in the .cpp).
+  // add_spread in the .cpp).
   Vec3d std_error(std::size_t primary) const;
   std::uint64_t hemispheres() const { return hemis_.size(); }
 
@@ -150,7 +150,6 @@ private:
   bool trace_ = false;
   std::uint32_t seed_ = 0;
   std::vector<Vec3d> variance_; // per primary, with spread
-
   PhaseProfile* prof_ = nullptr;
 };
 
