@@ -108,6 +108,22 @@ RenderOptions RenderOptions::rpict_defaults() {
   return o;
 }
 
+// rcontrib.c's globals: no shadow-test threshold (-dt 0) nor ambient cache (-aa 0, -as 0), since
+// coefficients must not depend on the source and sky values; rcontrib forces those three again
+// after parsing (override_options).
+RenderOptions RenderOptions::rcontrib_defaults() {
+  RenderOptions o;
+  o.direct_threshold = 0.0;
+  o.direct_jitter = 0.9;
+  o.direct_relays = 3;
+  o.specular_threshold = 0.02;
+  o.ambient_accuracy = 0.0;
+  o.ambient_divisions = 350;
+  o.ambient_supersamples = 0;
+  o.ambient_bounces = 1;
+  return o;
+}
+
 int parse_render_option(RenderOptions& o, const ArgList& a, std::size_t i,
                         const FileFinder& find_file) {
   if (i >= a.size() || a[i].size() < 2 || a[i][0] != '-') return -1;

@@ -1,5 +1,5 @@
-// The rendering options rtrace and rpict share (Radiance's renderopts.c and pmapopt.c), with
-// each program's 5.4a defaults, parsing and the "-defaults" listing.
+// The rendering options rtrace, rpict and rcontrib share (Radiance's renderopts.c and
+// pmapopt.c), with each program's 5.4a defaults, parsing and the "-defaults" listing.
 #pragma once
 
 #include "radcl/options/args.h"
@@ -60,6 +60,7 @@ struct RenderOptions {
 
   static RenderOptions rtrace_defaults();
   static RenderOptions rpict_defaults();
+  static RenderOptions rcontrib_defaults();
 };
 
 // Tries the rendering option at args[i] (already expanded). Returns the number of values it
