@@ -35,24 +35,24 @@ typedef struct rc_float4 {
   X(POLYGON, "polygon")                                                                            \
   X(CONE, "cone")                                                                                  \
   X(SPHERE, "sphere")                                                                              \
-  X(TEXFUNC, "texfunc") X(RING, "ring") X(CYLINDER, "cylinder") X(INSTANCE, "instance")            \
-      X(CUP, "cup") X(BUBBLE, "bubble") X(TUBE, "tube") X(MESH, "mesh") X(ALIAS, "alias")          \
-          X(PLASTIC, "plastic") X(METAL, "metal") X(GLASS, "glass") X(TRANS, "trans")              \
-              X(DIELECTRIC, "dielectric") X(PLASTIC2, "plastic2") X(METAL2, "metal2")              \
-                  X(TRANS2, "trans2") X(INTERFACE, "interface") X(PLASFUNC, "plasfunc") X(         \
-                      METFUNC, "metfunc") X(BRIGHTFUNC, "brightfunc") X(BRIGHTDATA, "brightdata")  \
-                      X(BRIGHTTEXT, "brighttext") X(COLORPICT, "colorpict") X(GLOW, "glow")        \
-                          X(SOURCE, "source") X(LIGHT, "light") X(ILLUM, "illum")                  \
-                              X(SPOTLIGHT, "spotlight") X(MIST, "mist") X(MIRROR, "mirror") X(     \
-                                  TRANSFUNC, "transfunc") X(BRTDFUNC, "BRTDfunc") X(BSDF, "BSDF")  \
-                                  X(ABSDF, "aBSDF") X(PLASDATA, "plasdata") X(METDATA, "metdata")  \
-                                      X(TRANSDATA, "transdata") X(COLORFUNC, "colorfunc")          \
-                                          X(ANTIMATTER, "antimatter") X(COLORDATA, "colordata")    \
-                                              X(COLORTEXT, "colortext") X(TEXDATA, "texdata")      \
-                                                  X(MIXFUNC, "mixfunc") X(MIXDATA, "mixdata")      \
-                                                      X(MIXTEXT, "mixtext") X(MIXPICT, "mixpict")  \
-                                                          X(PRISM1, "prism1") X(PRISM2, "prism2")  \
-                                                              X(ASHIK2, "ashik2")
+  X(TEXFUNC, "texfunc")                                                                            \
+  X(RING, "ring") X(CYLINDER, "cylinder") X(INSTANCE, "instance") X(CUP, "cup") X(                 \
+      BUBBLE, "bubble") X(TUBE, "tube") X(MESH, "mesh") X(ALIAS, "alias") X(PLASTIC, "plastic")    \
+      X(METAL, "metal") X(GLASS, "glass") X(TRANS, "trans") X(DIELECTRIC, "dielectric") X(         \
+          PLASTIC2, "plastic2") X(METAL2, "metal2") X(TRANS2, "trans2") X(INTERFACE, "interface")  \
+          X(PLASFUNC, "plasfunc") X(METFUNC, "metfunc") X(BRIGHTFUNC, "brightfunc")                \
+              X(BRIGHTDATA, "brightdata") X(BRIGHTTEXT, "brighttext") X(COLORPICT, "colorpict")    \
+                  X(GLOW, "glow") X(SOURCE, "source") X(LIGHT, "light") X(ILLUM, "illum")          \
+                      X(SPOTLIGHT, "spotlight") X(MIST, "mist") X(MIRROR, "mirror")                \
+                          X(TRANSFUNC, "transfunc") X(BRTDFUNC, "BRTDfunc") X(BSDF, "BSDF")        \
+                              X(ABSDF, "aBSDF") X(PLASDATA, "plasdata") X(METDATA, "metdata")      \
+                                  X(TRANSDATA, "transdata") X(COLORFUNC, "colorfunc")              \
+                                      X(ANTIMATTER, "antimatter") X(COLORDATA, "colordata")        \
+                                          X(COLORTEXT, "colortext") X(TEXDATA, "texdata")          \
+                                              X(MIXFUNC, "mixfunc") X(MIXDATA, "mixdata")          \
+                                                  X(MIXTEXT, "mixtext") X(MIXPICT, "mixpict")      \
+                                                      X(PRISM1, "prism1") X(PRISM2, "prism2")      \
+                                                          X(ASHIK2, "ashik2")
 
 #define RADCL_ENUM_ENTRY(id, name) RC_OBJ_##id,
 enum rc_object_type { RADCL_OBJECT_TYPES(RADCL_ENUM_ENTRY) RC_OBJ_COUNT };
@@ -326,7 +326,9 @@ typedef struct rc_params {
   rc_u32 mist;                /* args offset of the mist sources' table: per bit of
                                  rc_ray.slights, a source index (RC_NONE: unknown), then the
                                  bit set of the known ones; RC_NONE without mist */
-  rc_u32 pad1, pad2, pad3;
+  rc_u32 contrib;             /* rcontrib: args offset of the tracked modifiers' tables
+                                 (render/compile/contrib_tables.h); RC_NONE otherwise */
+  rc_u32 pad2, pad3;
 } rc_params;
 
 /* An irradiance-cache record as the lookup kernel reads it (../shared/docs/radiance/ambient-file.md
@@ -404,13 +406,14 @@ typedef struct rc_rng_key {
 #define RADCL_LAYOUT_STRUCTS(S)                                                                    \
   S(rc_float4)                                                                                     \
   S(rc_ray)                                                                                        \
-  S(rc_hit) S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror) S(rc_shadow) S(rc_pattern)      \
-      S(rc_rng_key) S(rc_params) S(rc_amb_record) S(rc_amb_node) S(rc_amb_hemi) S(rc_amb_sample)   \
-          S(rc_amb_made)
+  S(rc_hit)                                                                                        \
+  S(rc_surface) S(rc_material) S(rc_source) S(rc_mirror) S(rc_shadow) S(rc_pattern) S(rc_rng_key)  \
+      S(rc_params) S(rc_amb_record) S(rc_amb_node) S(rc_amb_hemi) S(rc_amb_sample) S(rc_amb_made)
 #define RADCL_LAYOUT_FIELDS(F)                                                                                             \
   F(rc_ray, org)                                                                                                           \
   F(rc_ray, dir)                                                                                                           \
-  F(rc_ray, coef) F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags) F(rc_ray, sample) F(                                \
+  F(rc_ray, coef)                                                                                                          \
+  F(rc_ray, primary) F(rc_ray, depth) F(rc_ray, flags) F(rc_ray, sample) F(                                                \
       rc_ray, ambient_depth) F(rc_ray, cext_b) F(rc_ray, tally) F(rc_ray, clip) F(rc_ray, inside)                          \
       F(rc_ray, cell) F(rc_ray, dist0) F(rc_ray, medium) F(rc_ray, gecc) F(rc_ray, slights) F(                             \
           rc_hit, pos) F(rc_hit, nrm) F(rc_hit, uv) F(rc_hit, pert) F(rc_hit, surface)                                     \
@@ -461,21 +464,25 @@ typedef struct rc_rng_key {
                                                           rc_params,                                                       \
                                                           amb) F(rc_params,                                                \
                                                                  medium) F(rc_params, albedo)                              \
-                                                          F(rc_params, mist) F(rc_amb_record, pos) F(                      \
+                                                          F(rc_params, mist) F(rc_params, contrib) F(                      \
                                                               rc_amb_record,                                               \
-                                                              nrm) F(rc_amb_record,                                        \
-                                                                     udir) F(rc_amb_record,                                \
-                                                                             val) F(rc_amb_record, grad)                   \
-                                                              F(rc_amb_node, lo) F(rc_amb_node, hi) F(                     \
-                                                                  rc_amb_node,                                             \
-                                                                  skip) F(rc_amb_node, first)                              \
-                                                                  F(rc_amb_node, count) F(                                 \
+                                                              pos) F(rc_amb_record,                                        \
+                                                                     nrm) F(rc_amb_record, udir)                           \
+                                                              F(rc_amb_record,                                             \
+                                                                val) F(rc_amb_record,                                      \
+                                                                       grad) F(rc_amb_node,                                \
+                                                                               lo) F(rc_amb_node,                          \
+                                                                                     hi) F(rc_amb_node, skip)              \
+                                                                  F(rc_amb_node, first) F(                                 \
                                                                       rc_amb_node,                                         \
-                                                                      bin) F(rc_amb_hemi,                                  \
-                                                                             pos) F(rc_amb_hemi, nrm)                      \
-                                                                      F(rc_amb_hemi, ux) F(                                \
+                                                                      count) F(rc_amb_node,                                \
+                                                                               bin) F(rc_amb_hemi, pos)                    \
+                                                                      F(                                                   \
                                                                           rc_amb_hemi,                                     \
-                                                                          uy) F(rc_amb_hemi, first)                        \
+                                                                          nrm) F(rc_amb_hemi,                              \
+                                                                                 ux) F(rc_amb_hemi,                        \
+                                                                                       uy) F(rc_amb_hemi,                  \
+                                                                                             first)                        \
                                                                           F(rc_amb_hemi, ns) F(                            \
                                                                               rc_amb_hemi,                                 \
                                                                               level) F(rc_amb_hemi,                        \

@@ -222,6 +222,13 @@ static void rc_direct(const rc_scene_args* S, rc_out* o, const rc_ward_iso* m,
       if (src->flags & RC_SRCF_VIRTUAL)
         ls *= rc_virtual_path(S->sources, S->mirrors, S->verts, src, p, l);
       if (rc_max3(ls) <= 0.0f) continue;
+#ifdef RADCL_CONTRIB_COEF
+      /* rcontrib -V-: the coefficient alone, without the source's radiance (a mirror's
+       * reflectance on the way stays: Radiance's shadow ray reflects there). */
+      ls = (src->flags & RC_SRCF_VIRTUAL)
+               ? rc_virtual_path(S->sources, S->mirrors, S->verts, src, p, l)
+               : (float3)(1.0f);
+#endif
       float3 v;
 #ifdef RADCL_HAS_BSDF_MATERIALS
       if (bh)

@@ -232,6 +232,10 @@ static void rc_shade_ray(const rc_scene_args* S, rc_out* o, rc_ray r, rc_hit h) 
   S.amb_blocked = amb_blocked;                                                                     \
   S.params = *params;
 
+#ifdef RADCL_CONTRIB
+#include "pipeline/contrib.cl"
+#endif
+
 /* Writes each ray's records from its offsets. Exact mode (caps of ~0u): the offsets come from
  * a count. Slot mode: every ray has room for cap_shadow and cap_spawn records; the counts
  * are written for every ray, with the top bit of nshadow set where the records did not fit.
@@ -270,7 +274,11 @@ kernel void rc_shade(global const rc_ray* rays, global const rc_hit* hits, uint 
     nspawn[i] = o.nspawn;
     return;
   }
+#ifdef RADCL_CONTRIB
+  immediate[i] = rc_contrib_hit(&S, &ray, hits[i]);
+#else
   immediate[i] = (float4)(o.immediate, 0.0f);
+#endif
   if (slots) {
     nshadow[i] = o.nshadow | (o.write ? 0u : 0x80000000u);
     nspawn[i] = o.nspawn;

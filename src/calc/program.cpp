@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -49,6 +50,18 @@ void Program::define(Definition def) {
   } else if (def.function && find_library(def.name)) {
     warning(def.name + ": definition hides library function");
   }
+  std::string key = def.name;
+  defs_[key] = std::make_unique<Definition>(std::move(def));
+}
+
+void Program::set_parameter(std::string_view name, const std::string& context, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  Definition def;
+  def.name = qualify(name, context);
+  def.context = context;
+  def.body = parse_expression(text, context, "parameter").root;
+  def.id = next_id_++;
   std::string key = def.name;
   defs_[key] = std::make_unique<Definition>(std::move(def));
 }

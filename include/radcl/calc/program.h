@@ -51,6 +51,9 @@ public:
   // Adds a parsed definition (replacing any previous one of that qualified name), with
   // Radiance's redefinition warnings.
   void define(Definition def);
+  // `name` = value in `context`, replacing any definition silently (Radiance's varset, as
+  // rcontrib's -p parameters are set).
+  void set_parameter(std::string_view name, const std::string& context, double value);
 
 private:
   std::unordered_map<std::string, std::unique_ptr<Definition>> defs_;

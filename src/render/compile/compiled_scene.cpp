@@ -25,8 +25,9 @@ using ModKey = std::pair<const scene::SceneDescription*, std::int32_t>;
 
 class Compiler {
 public:
-  Compiler(const scene::LoadedScene& ls, const geometry::SceneGeometry& geom, bool shading)
-      : ls_(ls), geom_(geom), shading_(shading), patterns_(geom.centre()) {}
+  Compiler(const scene::LoadedScene& ls, const geometry::SceneGeometry& geom, bool shading,
+           const ContribSpec* contrib)
+      : ls_(ls), geom_(geom), shading_(shading), contrib_(contrib), patterns_(geom.centre()) {}
 
   CompiledScene run() {
     const auto& placements = geom_.placements();
@@ -44,6 +45,7 @@ public:
       out_.mist_table = static_cast<std::uint32_t>(out_.args.size());
       out_.args.resize(out_.args.size() + kMaxMistSources + 1, 0.0f);
     }
+    if (contrib_) compile_contrib(*contrib_, out_, patterns_, geom_.centre());
     if (!patterns_.empty()) {
       out_.features.define("RADCL_HAS_PATTERNS");
       if (patterns_.has_data()) out_.features.define("RADCL_HAS_PATTERN_DATA");
@@ -65,6 +67,7 @@ public:
       std::uint32_t surf = out_.sources.sources[s].surface;
       if (surf < out_.surfaces.size()) out_.surfaces[surf].source = static_cast<std::uint32_t>(s);
     }
+    if (contrib_) compile_contrib_sources(out_);
     return std::move(out_);
   }
 
@@ -72,6 +75,7 @@ private:
   const scene::LoadedScene& ls_;
   const geometry::SceneGeometry& geom_;
   bool shading_;
+  const ContribSpec* contrib_;
   CompiledScene out_;
   std::map<std::pair<const scene::SceneDescription*, std::int32_t>, std::uint32_t> ids_;
   std::vector<ModKey> surface_mod_;          // direct modifier of each compiled surface
@@ -485,8 +489,8 @@ void mark_ambient_list(CompiledScene& cs, bool include, const std::vector<std::s
 }
 
 CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom,
-                            bool shading) {
-  return Compiler(scene, geom, shading).run();
+                            bool shading, const ContribSpec* contrib) {
+  return Compiler(scene, geom, shading, contrib).run();
 }
 
 } // namespace radcl::render

@@ -66,6 +66,26 @@ std::string PatternCompiler::load(const std::string& file, const std::string& wh
   return ctx;
 }
 
+void PatternCompiler::load_into(const std::string& context, bool is_file, const std::string& text,
+                                const std::string& where) {
+  if (contexts_.empty()) {
+    program_->load_rayinit();
+    contexts_["."] = "";
+  }
+  if (!is_file) {
+    program_->load_string(text, where, context);
+    return;
+  }
+  std::string path = scene::find_on_raypath(text);
+  if (path.empty()) throw FatalError(where + ": cannot find function file \"" + text + "\"");
+  program_->load_file(path, context);
+}
+
+void PatternCompiler::set_parameter(const std::string& context, const std::string& name,
+                                    double value) {
+  program_->set_parameter(name, context, value);
+}
+
 std::uint32_t PatternCompiler::request(const std::string& expr, const std::string& context,
                                        const std::string& where) {
   auto key = std::make_pair(expr, context);

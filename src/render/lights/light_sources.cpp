@@ -179,6 +179,7 @@ private:
     if (mat.type == RC_OBJ_SPOTLIGHT && !set_spot(o, mat, s)) return;
     out_.sources.push_back(s);
     out_.names.push_back(o.name);
+    out_.object_surface.push_back(index_(obj));
   }
 
   // Radiance's makespot() and checkspot(); false when the source is to be skipped.

@@ -20,6 +20,10 @@ device::ProgramSource shade_program(const CompiledScene& cs, const RenderSetting
   if (uses_cache(st)) f.define("RADCL_HAS_AMBCACHE");
   // Rays in mist travel in a medium even where no global one is set.
   if (has_medium(st) || cs.features.has(RC_OBJ_MIST)) f.define("RADCL_HAS_MEDIUM");
+  if (st.contrib) {
+    f.define("RADCL_CONTRIB");
+    if (!st.contrib->contributions) f.define("RADCL_CONTRIB_COEF");
+  }
   return f.program({"pipeline/shade.cl"});
 }
 
@@ -51,7 +55,7 @@ Renderer::Impl::~Impl() {
 }
 
 Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, device::Context& c)
-    : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom)),
+    : scene(s), settings(st), ctx(c), geom(s), cs(compile_scene(s, geom, true, st.contrib.get())),
       program(built(prof, c, shade_program(cs, st))), shade(program.kernel("rc_shade")),
       accumulate(program.kernel("rc_accumulate")), shadow_step(program.kernel("rc_shadow_step")),
       pack(program.kernel("rc_pack")), shadow_view(program.kernel("rc_shadow_view")),
@@ -60,6 +64,14 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
       materials(upload(c, cs.materials)), args(upload(c, cs.args)), params(c, sizeof(rc_params)),
       patterns(upload(c, cs.patterns)), centre(geom.centre()) {
   amb_blocked.update(c, std::vector<std::uint32_t>(4, 0u), 0);
+  if (st.contrib) {
+    if (st.aa > 0 || st.dt > 0 || st.trace != RenderSettings::Trace::Off || st.std_error ||
+        (st.as > 0 && st.ab > 0))
+      throw FatalError("contributions need -aa 0, -as 0, -dt 0 and no trace mode");
+    accumulate_contrib = program.kernel("rc_accumulate_contrib");
+    if (has_medium(st) || cs.features.has(RC_OBJ_MIST))
+      warning("ray contribution calculation does not support participating media");
+  }
   if (st.ambient_list != RenderSettings::AmbientList::None) {
     mark_ambient_list(cs, st.ambient_list == RenderSettings::AmbientList::Include,
                       st.ambient_names);
@@ -93,6 +105,7 @@ Renderer::Impl::Impl(const scene::LoadedScene& s, const RenderSettings& st, devi
   p.medium = f4(st.me[0], st.me[1], st.me[2], st.mg);
   p.albedo = f4(st.ma[0], st.ma[1], st.ma[2], st.ms);
   p.mist = RC_NONE;
+  p.contrib = cs.contrib_table;
   base = p;
   upload_cache();
   p = base;

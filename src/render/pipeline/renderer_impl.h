@@ -66,6 +66,7 @@ struct Renderer::Impl {
       settings.tuning.profile}; // before the program: its lifetime includes building it
   device::Program program;
   device::Kernel shade, accumulate, shadow_step, pack, shadow_view, shadow_view_counted, offsets;
+  device::Kernel accumulate_contrib; // rcontrib only
   device::Buffer surfaces, materials, args, sources, verts, mirror_surfaces, params, patterns;
   device::GrowingBuffer amb_records, amb_nodes, amb_blocked;
   Vec3d centre;
@@ -147,6 +148,7 @@ struct Renderer::Impl {
     std::size_t first = 0; // its first primary's index in the caller's rays
     IdSlots ids;           // the caller's own ids, looked up (empty: ids are indices)
     std::vector<Vec3d> sums, mirrored_sums; // per primary
+    std::vector<double> contrib;            // rcontrib: per primary, its bins (rgb)
     std::span<PrimaryResult> results;       // the caller's
     std::vector<std::uint32_t> root_depth;  // reflection depth of its first rays
     std::span<const rc_ray> generation;     // the host's queue being traced
@@ -245,6 +247,8 @@ struct Renderer::Impl {
   void place_slice(ShadeSlice& s, RayQueue& next);
   void finish_slice(ShadeSlice& s, RayQueue& next);
   void add_slice(const ShadeSlice& s);
+  // rcontrib: the slice's contributions into its primaries' bins (contrib_slice.cpp).
+  void add_slice_contrib(const ShadeSlice& s);
   // How a slice's data crosses between host and device (slice_transfer.h), chosen once.
   const std::unique_ptr<SliceTransfer> transfer = make_slice_transfer(ctx);
   // Shades the rays `over` (slice indices) again, their records written into exact room, and
@@ -264,6 +268,7 @@ struct Renderer::Impl {
     std::vector<rc_float4> total;
     HostQueue<rc_ray> fused_children; // a fused slice's packed children, read whole
   } shade_scratch;
+  std::vector<rc_float4> contrib_requests; // rcontrib: a slice's shadow requests' contributions
   // The -as tally tree fed beside the shading: a slice's tally is a task (in ahead_arena) that
   // runs while the next slice is shaded, one at a time and in slice order, so the sums are
   // those of the serial order. It reads the slice's rays (the generation's queue, unchanged

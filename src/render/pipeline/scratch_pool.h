@@ -43,6 +43,7 @@ enum ScratchSlot {
   kTotals,
   kCells,
   kTallies,
+  kContrib, // rcontrib: the shadow requests' contributions
   kScratchSlots
 };
 

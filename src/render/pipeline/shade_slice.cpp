@@ -141,7 +141,7 @@ void Renderer::Impl::finish_slice(ShadeSlice& s, RayQueue& next) {
   // On a GPU a small slice's time is the latency of its waits: the sums go along with every
   // shadow step, in its wait, and stand if it was the last (wasted work otherwise, which is
   // small for a slice this size).
-  const bool along = transfer->sums_along(*this, n) && !traced_shadows;
+  const bool along = transfer->sums_along(*this, n) && !traced_shadows && !settings.contrib;
   const bool summed =
       shadow_tracer.trace(*s.shadows, nshadow, x.blocked, s.view,
                           along ? std::function<void()>(sum_up) : std::function<void()>{});
@@ -150,6 +150,13 @@ void Renderer::Impl::finish_slice(ShadeSlice& s, RayQueue& next) {
   x.shadows.resize(traced_shadows ? nshadow : 0);
   if (!x.shadows.empty())
     s.shadows->read_later(x.shadows.data(), x.shadows.size() * sizeof(rc_shadow));
+  if (settings.contrib) {
+    clock.mark(PhaseProfile::StepSumsWait);
+    add_slice_contrib(s);
+    set_misses_aside(next, s.first_child);
+    clock.mark(PhaseProfile::StepSumsTally);
+    return;
+  }
   if (!summed) sum_up();
   if (!summed || !x.shadows.empty()) ctx.finish();
   clock.mark(PhaseProfile::StepSumsWait);

@@ -67,6 +67,11 @@ void Renderer::Impl::run(std::span<const PrimaryRay> rays, std::span<PrimaryResu
   const std::size_t cap = generation_rays();
   for (std::size_t first = 0; first < rays.size();) {
     std::size_t n = std::min(wave, rays.size() - first);
+    // rcontrib: a batch's bins in double stay within 256 MB (10^4 sensors of 2,305 bins
+    // would take 550 MB at once).
+    if (settings.contrib)
+      n = std::min(n, std::max<std::size_t>(1, (std::size_t{1} << 25) /
+                                                   (3 * settings.contrib->total_bins() + 1)));
     if (!uses_cache(settings)) {
       // Before any batch is measured, a guess: -ad rays at the first bounce, and about 16
       // times as many at the second (-ab 2 -ad 1024 gives 9,000).
@@ -103,6 +108,7 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
   leak_lists.assign(1, 0u);
   leak_uploaded = 0;
   batch.sums.assign(prim.size(), Vec3d{0, 0, 0});
+  if (settings.contrib) batch.contrib.assign(prim.size() * 3 * settings.contrib->total_bins(), 0.0);
   batch.mirrored_sums.assign(prim.size(), Vec3d{0, 0, 0});
   batch.results = res;
   batch.root_depth.assign(prim.size(), 0);
@@ -120,6 +126,11 @@ void Renderer::Impl::render_batch(std::span<const PrimaryRay> prim, std::span<Pr
     res[i].value = tree ? tally.sum(i) : batch.sums[i];
     res[i].mirrored = tree ? tally.mirrored(i) : batch.mirrored_sums[i];
     if (settings.std_error) res[i].std_error = tally.std_error(i);
+    if (settings.contrib) {
+      const std::size_t w = 3 * settings.contrib->total_bins();
+      res[i].contrib.assign(batch.contrib.begin() + static_cast<std::ptrdiff_t>(i * w),
+                            batch.contrib.begin() + static_cast<std::ptrdiff_t>((i + 1) * w));
+    }
   };
   if (settings.trace != RenderSettings::Trace::Off) {
     for (std::size_t i = 0; i < prim.size(); ++i) {

@@ -11,8 +11,9 @@
 #include "radcl/device/feature_set.h"
 #include "radcl/device_types.h"
 #include "radcl/geometry/scene_geometry.h"
-#include "radcl/render/lights/light_sources.h"
+#include "radcl/render/compile/contrib_tables.h"
 #include "radcl/render/compile/mist_materials.h"
+#include "radcl/render/lights/light_sources.h"
 #include "radcl/scene/loader.h"
 
 namespace radcl::render {
@@ -40,6 +41,9 @@ struct CompiledScene {
   MistSources mist_sources;
   std::uint32_t mist_table = RC_NONE;
 
+  // rcontrib (render/compile/contrib_tables.h): the tables' offset in args, or RC_NONE.
+  std::uint32_t contrib_table = RC_NONE;
+
   std::vector<std::uint32_t> placement_base;              // first surface slot per placement
   std::vector<const scene::TriangleMesh*> placement_mesh; // mesh of a mesh placement
 };
@@ -58,7 +62,8 @@ void mark_ambient_list(CompiledScene& cs, bool include, const std::vector<std::s
 // Throws FatalError naming the material for types the renderer does not handle yet. With
 // `shading` false (ray casting only) every material is accepted, nothing is checked for
 // shading and no light sources are compiled.
+// `contrib`: rcontrib's tracked modifiers (contrib_tables.h), or none.
 CompiledScene compile_scene(const scene::LoadedScene& scene, const geometry::SceneGeometry& geom,
-                            bool shading = true);
+                            bool shading = true, const ContribSpec* contrib = nullptr);
 
 } // namespace radcl::render

@@ -53,6 +53,18 @@ public:
   // Whether the scene compiler can handle this modifier type as a pattern yet.
   static bool supported(rc_object_type t);
 
+  // rcontrib's bin expressions, each in a context of its own parameter set: a function file
+  // (found on RAYPATH) or statements loaded into `context`, a parameter set there (Radiance's
+  // set_eparams: no redefinition warning), an expression evaluated there (its dispatcher
+  // number).
+  void load_into(const std::string& context, bool is_file, const std::string& text,
+                 const std::string& where);
+  void set_parameter(const std::string& context, const std::string& name, double value);
+  std::uint32_t request_expression(const std::string& expr, const std::string& context,
+                                   const std::string& where) {
+    return request(expr, context, where);
+  }
+
 private:
   std::uint32_t request(const std::string& expr, const std::string& context,
                         const std::string& where);

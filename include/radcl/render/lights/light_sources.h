@@ -18,6 +18,7 @@ struct CompiledSources {
   std::vector<rc_float4> verts;   // polygon source vertices (re-centred), referenced by rc_source
   std::vector<rc_mirror> mirrors; // mirrors of virtual sources (virtual_sources.h)
   std::vector<std::string> names; // object names of the real sources (they come first)
+  std::vector<std::uint32_t> object_surface; // compiled surface of each real source's object
 };
 
 // One rc_source per direct light source of the main scene (scene::is_light_source) and per

@@ -72,6 +72,10 @@ struct RenderSettings {
   // hemispheres' divisions (PrimaryResult::std_error). Values are those without it, up to the
   // order their double sums are added in.
   bool std_error = false;
+  // rcontrib: the tracked modifiers (null: rtrace and rpict). Each primary's result then
+  // holds its bins (PrimaryResult::contrib) and `value` stays 0. Needs -aa 0, -as 0, -dt 0
+  // and no trace mode, as rcontrib forces.
+  std::shared_ptr<const ContribSpec> contrib;
   // How the pipeline runs (the same outputs whatever it says, leak_test aside).
   PipelineTuning tuning;
 };
@@ -121,6 +125,8 @@ struct PrimaryResult {
   // RenderSettings::std_error: the standard error of `value` (rgb) as the spread of the
   // hemisphere samples at the first ambient bounce estimates it (0 where none was sampled).
   Vec3d std_error{};
+  // RenderSettings::contrib: every bin of every tracked modifier, in order, rgb (3 per bin).
+  std::vector<double> contrib;
 };
 
 // Rays traced so far (what Embree was asked), for reports and benchmarks.
@@ -132,6 +138,7 @@ struct RenderStats {
   std::uint64_t records = 0;      // irradiance-cache records made
   std::uint64_t leak_tests = 0;   // cache records' leak-test rays (Radiance's plugaleak)
   std::uint64_t leaks = 0;        // hits at which some record's test ray was blocked
+  std::uint64_t bad_bins = 0;     // rcontrib: contributions to a bin beyond its modifier's count
   std::uint64_t total() const { return primary + secondary + shadow; }
 };
 

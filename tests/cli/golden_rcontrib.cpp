@@ -1,0 +1,157 @@
+// rcontrib against Radiance's own rcontrib on office_clear's room (tests/data/rcontrib, made by
+// its make_reference.sh): a direct-sun matrix of six suns with -M (deterministic: every number
+// within float rounding), and daylight coefficients of a unit sky dome in Reinhart's MF:1 and
+// MF:2 bins, where each bin's mean over independent radcl runs must lie within the combined
+// noise of both sides' means. And the check that needs no Radiance: the -V+ contributions of
+// every bin add up to rtrace's value for the same rays and seed.
+#include <cmath>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "files.h"
+#include "run_program.h"
+#include "test_env.h"
+
+namespace {
+
+using Rows = std::vector<std::vector<double>>;
+namespace t = radcl::test;
+
+Rows numbers(const std::string& text) {
+  Rows rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream w(line);
+    std::vector<double> r;
+    for (double x; w >> x;)
+      r.push_back(x);
+    if (!r.empty()) rows.push_back(r);
+  }
+  return rows;
+}
+
+std::string sensors() {
+  return t::read_file(t::data("rcontrib/office_sensors12.pts"));
+}
+
+Rows run(const std::string& program, const std::string& args, int seed = 1) {
+  const t::ProgramRun r = t::Program(program)
+                              .env("RADCL_SEED=" + std::to_string(seed) + " ")
+                              .input(sensors())
+                              .run("-n 2 " + args);
+  EXPECT_EQ(r.rc, 0) << r.err;
+  return numbers(r.out);
+}
+
+// Mean and standard error over independent runs (seeds 1..k).
+void draws(const std::string& args, int k, Rows& mean, Rows& se) {
+  std::vector<Rows> runs;
+  for (int s = 1; s <= k; ++s)
+    runs.push_back(run("rcontrib", args, s));
+  mean = se = runs[0];
+  for (std::size_t i = 0; i < mean.size(); ++i)
+    for (std::size_t j = 0; j < mean[i].size(); ++j) {
+      double s = 0, q = 0;
+      for (const Rows& r : runs) {
+        s += r[i][j];
+        q += r[i][j] * r[i][j];
+      }
+      const double m = s / k;
+      mean[i][j] = m;
+      se[i][j] = std::sqrt(std::max(0.0, (q - k * m * m) / (k - 1)) / k);
+    }
+}
+
+// Every bin within the combined noise: at most 3% of the numbers beyond 3 standard errors and
+// none beyond 6; each sensor's sum over the bins within 3.5. A bin that few samples reach has
+// a nearly fixed count in a stratified hemisphere (Radiance's 8 runs may all put exactly one
+// sample in it), so the spread of a few runs underrates its error; each side's error is at
+// least that of independent samples, whose variance per run is at most the largest single
+// sample's contribution (`quantum`: pi/-ad of a unit sky) times the bin's mean. Stratification
+// only lowers the variance, so this bound holds for both renderers.
+void expect_within_noise(const Rows& m, const Rows& se, int k, const Rows& rm, const Rows& rse,
+                         int rk, double quantum) {
+  ASSERT_EQ(m.size(), rm.size());
+  std::size_t n = 0, over3 = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    ASSERT_EQ(m[i].size(), rm[i].size()) << i;
+    double sum = 0, rsum = 0, var = 0;
+    for (std::size_t j = 0; j < m[i].size(); ++j) {
+      sum += m[i][j];
+      rsum += rm[i][j];
+      const double v = std::max(se[i][j] * se[i][j], quantum * std::fabs(m[i][j]) / k) +
+                       std::max(rse[i][j] * rse[i][j], quantum * std::fabs(rm[i][j]) / rk);
+      var += v;
+      if (v <= 0) {
+        EXPECT_NEAR(m[i][j], rm[i][j], 1e-9) << "sensor " << i << " number " << j;
+        continue;
+      }
+      const double z = std::fabs(m[i][j] - rm[i][j]) / std::sqrt(v);
+      ++n;
+      over3 += z > 3;
+      worst = std::max(worst, z);
+    }
+    EXPECT_LE(std::fabs(sum - rsum), 3.5 * std::sqrt(var))
+        << "sensor " << i << ": " << sum << " against " << rsum;
+  }
+  ASSERT_GT(n, 50u);
+  EXPECT_LE(over3, n * 3 / 100) << "of " << n;
+  EXPECT_LE(worst, 6.0);
+}
+
+const std::string kDome = " -f reinhart.cal -b rbin -bn Nrbins -m skyglow office_dome.oct";
+
+} // namespace
+
+TEST(GoldenRcontrib, SunMatrixIsRadiances) {
+  const Rows r =
+      run("rcontrib", "-h -I -ab 0 -dc 1 -dt 0 -dj 0 -M office_suns.mod office_suns.oct");
+  const Rows ref = numbers(t::read_file(t::data("rcontrib/suns_radiance.txt")));
+  ASSERT_EQ(r.size(), 12u);
+  ASSERT_EQ(r.size(), ref.size());
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    ASSERT_EQ(r[i].size(), 18u);
+    for (std::size_t j = 0; j < r[i].size(); ++j) {
+      EXPECT_NEAR(r[i][j], ref[i][j], 1e-4 * ref[i][j] + 1e-12) << i << " " << j;
+      lit += ref[i][j] > 0;
+    }
+  }
+  EXPECT_GT(lit, 30u); // the window lets some suns in at most sensors
+}
+
+TEST(GoldenRcontrib, DomeReinhartMF1WithinNoise) {
+  Rows m, se;
+  draws("-h -I -ab 1 -ad 2048 -lw 1e-5 -e MF:1" + kDome, 4, m, se);
+  expect_within_noise(m, se, 4, numbers(t::read_file(t::data("rcontrib/dome_mf1_mean.txt"))),
+                      numbers(t::read_file(t::data("rcontrib/dome_mf1_se.txt"))), 8, M_PI / 2048);
+  ASSERT_EQ(m[0].size(), 146u * 3);
+}
+
+TEST(GoldenRcontrib, DomeReinhartMF2WithinNoise) {
+  Rows m, se;
+  draws("-h -I -ab 2 -ad 512 -lw 1e-5 -e MF:2" + kDome, 4, m, se);
+  expect_within_noise(m, se, 4, numbers(t::read_file(t::data("rcontrib/dome_mf2_mean.txt"))),
+                      numbers(t::read_file(t::data("rcontrib/dome_mf2_se.txt"))), 8, M_PI / 512);
+  ASSERT_EQ(m[0].size(), 578u * 3);
+}
+
+// The bins split rtrace's value: the same rays, shaded the same way, added per bin.
+TEST(GoldenRcontrib, BinsAddUpToRtrace) {
+  const std::string o = "-h -u- -I -ab 2 -ad 256 -lw 1e-5 -dj 0 -st .02 -dt 0 -aa 0 -as 0 -dr 3 ";
+  const Rows v = run("rtrace", o + "office_dome.oct");
+  const Rows c = run("rcontrib", o + "-V+ -e MF:1" + kDome);
+  ASSERT_EQ(v.size(), 12u);
+  ASSERT_EQ(c.size(), 12u);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int ch = 0; ch < 3; ++ch) {
+      double sum = 0;
+      for (std::size_t j = ch; j < c[i].size(); j += 3)
+        sum += c[i][j];
+      EXPECT_NEAR(sum, v[i][ch], 1e-5 * v[i][ch] + 1e-9) << i;
+      EXPECT_GT(v[i][ch], 0) << i;
+    }
+}

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Makes the Radiance rcontrib outputs tests/cli/golden_rcontrib.cpp compares radcl's with, on
+# office_clear's room under a unit sky dome (office_dome.oct) and six unit suns
+# (office_suns.oct), for the 12 sensors of office_sensors12.pts. Needs Radiance's programs in
+# RADIANCE_BIN and its function files on RAYPATH; run by hand, never by the tests.
+#   suns_radiance.txt        -I -ab 0 -dc 1 -dt 0 -dj 0 -M office_suns.mod (deterministic)
+#   dome_mf1_{mean,se}.txt   -I -ab 1 -ad 2048 -lw 1e-5, Reinhart MF:1 (146 bins)
+#   dome_mf2_{mean,se}.txt   -I -ab 2 -ad 512 -lw 1e-5, Reinhart MF:2 (578 bins)
+# The dome cases are the mean and standard error of 8 independent runs (Radiance seeds its
+# random numbers from the clock: the runs start a second apart).
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+rc=${RADIANCE_BIN:?set RADIANCE_BIN to Radiance\'s bin folder}/rcontrib
+cd "$here/../scenes"
+pts=$here/office_sensors12.pts
+"$rc" -h -I -ab 0 -dc 1 -dt 0 -dj 0 -M office_suns.mod office_suns.oct < "$pts" > "$here/suns_radiance.txt"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+for c in "mf1:-ab 1 -ad 2048 -lw 1e-5 -e MF:1" "mf2:-ab 2 -ad 512 -lw 1e-5 -e MF:2"; do
+  name=${c%%:*}
+  for k in 1 2 3 4 5 6 7 8; do
+    # shellcheck disable=SC2086 # the options are words
+    "$rc" -h -I ${c#*:} -f reinhart.cal -b rbin -bn Nrbins -m skyglow office_dome.oct < "$pts" > "$work/$k.txt"
+    sleep 1.1
+  done
+  # Per number: the mean over the runs and its standard error.
+  awk -v out="$here/dome_${name}" '
+    FNR == 1 { f++ }
+    { for (j = 1; j <= NF; j++) { s[FNR, j] += $j; q[FNR, j] += $j * $j }; nf[FNR] = NF; n = FNR }
+    END {
+      for (i = 1; i <= n; i++) {
+        m = ""; e = ""
+        for (j = 1; j <= nf[i]; j++) {
+          mean = s[i, j] / f; var = (q[i, j] - f * mean * mean) / (f - 1); if (var < 0) var = 0
+          m = m sprintf("%.6e\t", mean); e = e sprintf("%.6e\t", sqrt(var / f))
+        }
+        print m > (out "_mean.txt"); print e > (out "_se.txt")
+      }
+    }' "$work"/?.txt
+done
