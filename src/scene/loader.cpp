@@ -3,8 +3,10 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 
 #include "radcl/scene/octree_reader.h"
+#include "radcl/scene/portable_io.h"
 #include "radcl/scene/rad_reader.h"
 #include "radcl/scene/raypath.h"
 #include "radcl/scene/transform.h"
@@ -99,6 +101,20 @@ LoadedScene load_scene(const std::vector<std::string>& inputs) {
   LoadedScene result;
   Loader loader(result);
 
+  // One "!command" whose output is an octree: rfluxmtx gives rcontrib
+  // '!oconv -f -i system.oct receiver.rad', as Radiance's readoct() reads commands.
+  if (inputs.size() == 1 && inputs[0].size() > 1 && inputs[0][0] == '!' &&
+      !ends_with(inputs[0], ".oct")) {
+    std::string bytes = read_input_bytes(inputs[0], "scene command");
+    const auto end = bytes.find("\n\n");
+    if (bytes.rfind("#?RADIANCE", 0) == 0 &&
+        bytes.substr(0, end).find("\nFORMAT=Radiance_octree") != std::string::npos)
+      return load_octree_data(std::move(bytes), inputs[0]);
+    std::istringstream text(bytes);
+    read_rad_stream(result.main, text, inputs[0]);
+    loader.resolve(result.main);
+    return result;
+  }
   std::size_t octrees = 0;
   for (const auto& in : inputs)
     octrees += is_octree(in);

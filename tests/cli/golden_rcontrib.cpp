@@ -3,7 +3,9 @@
 // within float rounding), and daylight coefficients of a unit sky dome in Reinhart's MF:1 and
 // MF:2 bins, where each bin's mean over independent radcl runs must lie within the combined
 // noise of both sides' means. And the check that needs no Radiance: the -V+ contributions of
-// every bin add up to rtrace's value for the same rays and seed.
+// every bin add up to rtrace's value for the same rays and seed. And the command line Radiance's
+// rfluxmtx makes for a view matrix to the window in Klems' full basis, run unchanged on the
+// octree it would build (given as a command, as rfluxmtx gives it).
 #include <cmath>
 #include <gtest/gtest.h>
 #include <sstream>
@@ -154,4 +156,22 @@ TEST(GoldenRcontrib, BinsAddUpToRtrace) {
       EXPECT_NEAR(sum, v[i][ch], 1e-5 * v[i][ch] + 1e-9) << i;
       EXPECT_GT(v[i][ch], 0) << i;
     }
+}
+
+// rfluxmtx -v -ab 1 -ad 2048 -lw 1e-4 -I - office_window_kf.rad -i office_open.oct prints this
+// command; its octree argument '!oconv -f -i office_open.oct office_window_kf.rad' is stored as
+// office_vmx.oct, read here through a command as rfluxmtx passes it.
+TEST(GoldenRcontrib, RfluxmtxViewMatrixWithinNoise) {
+  const std::string cmd = "-fo+ -ab 1 -ad 2048 -lw 1e-4 -I -faa -c 1 -f klems_full.cal -p RHS=+1 "
+                          "-bn Nkbins -b 'kbin(0,1,0,0,0,1)' -m windowglow '!cat office_vmx.oct'";
+  const t::ProgramRun r = t::Program("rcontrib").input(sensors()).run(cmd);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("NCOLS=145\n"), std::string::npos) << r.out.substr(0, 600);
+  EXPECT_NE(r.out.find("FORMAT=ascii\n"), std::string::npos);
+  Rows m, se;
+  draws("-h " + cmd, 4, m, se);
+  ASSERT_EQ(m.size(), 12u);
+  ASSERT_EQ(m[0].size(), 145u * 3);
+  expect_within_noise(m, se, 4, numbers(t::read_file(t::data("rcontrib/vmx_kf_mean.txt"))),
+                      numbers(t::read_file(t::data("rcontrib/vmx_kf_se.txt"))), 8, M_PI / 2048);
 }

@@ -6,6 +6,11 @@
 #   suns_radiance.txt        -I -ab 0 -dc 1 -dt 0 -dj 0 -M office_suns.mod (deterministic)
 #   dome_mf1_{mean,se}.txt   -I -ab 1 -ad 2048 -lw 1e-5, Reinhart MF:1 (146 bins)
 #   dome_mf2_{mean,se}.txt   -I -ab 2 -ad 512 -lw 1e-5, Reinhart MF:2 (578 bins)
+#   vmx_kf_{mean,se}.txt     a view matrix to the window in Klems' full basis (145 bins), with
+#                            the rcontrib command line rfluxmtx makes for
+#     rfluxmtx -v -ab 1 -ad 2048 -lw 1e-4 -I - office_window_kf.rad -i office_open.oct
+#                            on the octree it makes (oconv -f -i office_open.oct
+#                            office_window_kf.rad > office_vmx.oct)
 # The dome cases are the mean and standard error of 8 independent runs (Radiance seeds its
 # random numbers from the clock: the runs start a second apart).
 set -euo pipefail
@@ -16,15 +21,18 @@ pts=$here/office_sensors12.pts
 "$rc" -h -I -ab 0 -dc 1 -dt 0 -dj 0 -M office_suns.mod office_suns.oct < "$pts" > "$here/suns_radiance.txt"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for c in "mf1:-ab 1 -ad 2048 -lw 1e-5 -e MF:1" "mf2:-ab 2 -ad 512 -lw 1e-5 -e MF:2"; do
+dome="-f reinhart.cal -b rbin -bn Nrbins -m skyglow office_dome.oct"
+vmx="-fo+ -ab 1 -ad 2048 -lw 1e-4 -I -faa -c 1 -f klems_full.cal -p RHS=+1 -bn Nkbins -b kbin(0,1,0,0,0,1) -m windowglow office_vmx.oct"
+for c in "dome_mf1:-I -ab 1 -ad 2048 -lw 1e-5 -e MF:1 $dome" "dome_mf2:-I -ab 2 -ad 512 -lw 1e-5 -e MF:2 $dome" \
+  "vmx_kf:$vmx"; do
   name=${c%%:*}
   for k in 1 2 3 4 5 6 7 8; do
     # shellcheck disable=SC2086 # the options are words
-    "$rc" -h -I ${c#*:} -f reinhart.cal -b rbin -bn Nrbins -m skyglow office_dome.oct < "$pts" > "$work/$k.txt"
+    "$rc" -h ${c#*:} < "$pts" > "$work/$k.txt"
     sleep 1.1
   done
   # Per number: the mean over the runs and its standard error.
-  awk -v out="$here/dome_${name}" '
+  awk -v out="$here/${name}" '
     FNR == 1 { f++ }
     { for (j = 1; j <= NF; j++) { s[FNR, j] += $j; q[FNR, j] += $j * $j }; nf[FNR] = NF; n = FNR }
     END {
@@ -37,4 +45,5 @@ for c in "mf1:-ab 1 -ad 2048 -lw 1e-5 -e MF:1" "mf2:-ab 2 -ad 512 -lw 1e-5 -e MF
         print m > (out "_mean.txt"); print e > (out "_se.txt")
       }
     }' "$work"/?.txt
+  rm -f "$work"/?.txt
 done
