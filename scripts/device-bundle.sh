@@ -16,6 +16,7 @@ stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 mkdir -p "$stage"/{bin,lib,ref,radiance}
 cp "$build"/bin/{radcl,rtrace,rpict,gensky} "$stage/bin/"
+[ -e "$build/bin/rcontrib" ] && cp "$build/bin/rcontrib" "$stage/bin/"
 for t in "$build"/bin/bench_{gen_scenes,picture_mean,embree_rays}; do # peers.sh helpers, the Embree limit
   if [ -e "$t" ]; then cp "$t" "$stage/bin/"; fi
 done
@@ -24,13 +25,13 @@ for t in "$build"/bin/test_{render,cli,device,calc,ambient}_*; do
 done
 cp /usr/bin/time "$stage/bin/gnu-time"
 # Every library outside glibc and the C++ runtime, which that machine has in newer versions.
-ldd "$build"/bin/{radcl,rtrace,rpict} $(ls "$stage"/bin/test_* 2>/dev/null) | awk '$3 ~ /^\// { print $3 }' |
+ldd "$build"/bin/{radcl,rtrace,rpict} $(ls "$build"/bin/rcontrib 2>/dev/null) $(ls "$stage"/bin/test_* 2>/dev/null) | awk '$3 ~ /^\// { print $3 }' |
   sort -u | grep -Ev '/(libc|libm|libgcc_s|libstdc\+\+|ld-linux[^/]*)\.so' |
   xargs -r cp -L -t "$stage/lib/"
 cp -r "$ref/results" "$stage/ref/"
 if [ -n "${RADIANCE_BIN:-}" ]; then
   cp "$RADIANCE_BIN"/{rtrace,rpict} "$stage/radiance/"
-  for p in oconv vwrays; do # peers.sh: the open-plan octrees, rays from a view
+  for p in oconv vwrays rcontrib; do # peers.sh: the open-plan octrees, rays from a view; rcontrib.sh
     if [ -e "$RADIANCE_BIN/$p" ]; then cp "$RADIANCE_BIN/$p" "$stage/radiance/"; fi
   done
   IFS=: read -ra libs <<< "${RADIANCE_LIB:-}"
