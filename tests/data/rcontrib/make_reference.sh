@@ -11,8 +11,12 @@
 #     rfluxmtx -v -ab 1 -ad 2048 -lw 1e-4 -I - office_window_kf.rad -i office_open.oct
 #                            on the octree it makes (oconv -f -i office_open.oct
 #                            office_window_kf.rad > office_vmx.oct)
-# The dome cases are the mean and standard error of 8 independent runs (Radiance seeds its
-# random numbers from the clock: the runs start a second apart).
+#   view_sky_{mean,se}.txt   a 16 x 12 picture's sky coefficients, -x 16 -y 12 -ab 1 -ad 256,
+#                            from office_view_rays.f32 (vwrays -ff -pj 0 -x 16 -y 12 -vf
+#                            office.vf)
+# The Monte-Carlo cases are the mean and standard error of 8 independent runs (Radiance
+# seeds its random numbers from the clock: the runs start a second apart); the picture's
+# resolution string is left out.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 rc=${RADIANCE_BIN:?set RADIANCE_BIN to Radiance\'s bin folder}/rcontrib
@@ -24,11 +28,13 @@ trap 'rm -rf "$work"' EXIT
 dome="-f reinhart.cal -b rbin -bn Nrbins -m skyglow office_dome.oct"
 vmx="-fo+ -ab 1 -ad 2048 -lw 1e-4 -I -faa -c 1 -f klems_full.cal -p RHS=+1 -bn Nkbins -b kbin(0,1,0,0,0,1) -m windowglow office_vmx.oct"
 for c in "dome_mf1:-I -ab 1 -ad 2048 -lw 1e-5 -e MF:1 $dome" "dome_mf2:-I -ab 2 -ad 512 -lw 1e-5 -e MF:2 $dome" \
-  "vmx_kf:$vmx"; do
+  "vmx_kf:$vmx" "view_sky:-ffa -x 16 -y 12 -ld- -ab 1 -ad 256 -lw 1e-4 -m skyglow office_dome.oct"; do
   name=${c%%:*}
   for k in 1 2 3 4 5 6 7 8; do
     # shellcheck disable=SC2086 # the options are words
-    "$rc" -h ${c#*:} < "$pts" > "$work/$k.txt"
+    in=$pts
+    [ "$name" = view_sky ] && in=$here/office_view_rays.f32
+    "$rc" -h ${c#*:} < "$in" | sed '/^-Y /d' > "$work/$k.txt"
     sleep 1.1
   done
   # Per number: the mean over the runs and its standard error.
