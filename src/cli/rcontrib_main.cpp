@@ -152,6 +152,8 @@ private:
   std::vector<double> acc_; // the record being accumulated
   int account_ = 0;         // rays in it so far
   long long raysleft_ = -1; // -y: rays still expected (-1: until the input ends)
+  long long total_ = 0;     // -t: the rays expected in all, once the first report is due
+  std::time_t start_ = 0, last_report_ = 0;
   std::uint32_t next_id_ = 0;
   std::vector<Input> batch_;
   bool warned_dummy_ = false;
@@ -187,10 +189,30 @@ private:
         for (std::size_t j = 0; j < width_; ++j)
           acc_[j] += c[j];
       }
-      if (raysleft_ > 0) --raysleft_;
+      if (raysleft_ > 0) {
+        --raysleft_;
+        report();
+      }
       if (opt_.accumulate > 0 && ++account_ >= opt_.accumulate) emit();
     }
     batch_.clear();
+  }
+
+  // -t: progress every so many seconds where -y tells how many rays are coming (Radiance's
+  // morays()).
+  void report() {
+    if (opt_.report_interval <= 0) return;
+    const std::time_t now = std::time(nullptr);
+    if (now < last_report_ + opt_.report_interval) return;
+    if (total_ == 0) {
+      total_ = raysleft_ + 1;
+      start_ = now;
+    } else {
+      std::fprintf(stderr, "%s: %.2f%% done after %.3f hours\n", program_name().c_str(),
+                   100.0 - 100.0 * static_cast<double>(raysleft_) / static_cast<double>(total_),
+                   static_cast<double>(now - start_) / 3600.0);
+    }
+    last_report_ = now;
   }
 
   // rays > 0: a partial last record, which Radiance divides by its own ray count.
