@@ -8,9 +8,9 @@ set(CPACK_PACKAGE_NAME radcl)
 set(CPACK_PACKAGE_VENDOR "radcl")
 set(CPACK_PACKAGE_CONTACT "radcl maintainers <radcl@users.noreply.github.com>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
-    "Radiance-compatible rtrace and rpict with OpenCL shading and Embree traversal")
+    "Radiance-compatible rtrace, rpict and rcontrib with OpenCL shading and Embree traversal")
 set(CPACK_PACKAGE_DESCRIPTION
-    "radcl reads Radiance scenes and octrees, takes rtrace's and rpict's options and writes their outputs and .amb cache files; shading runs in OpenCL kernels (PoCL on the CPU, or a GPU).")
+    "radcl reads Radiance scenes and octrees, takes rtrace's, rpict's and rcontrib's options and writes their outputs and .amb cache files; shading runs in OpenCL kernels (PoCL on the CPU, or a GPU).")
 set(CPACK_RESOURCE_FILE_LICENSE "${PROJECT_SOURCE_DIR}/LICENSE")
 set(CPACK_STRIP_FILES ON)
 set(CPACK_GENERATOR "DEB;TGZ")

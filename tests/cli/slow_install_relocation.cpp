@@ -1,5 +1,5 @@
 // A relocatable install: `cmake --install` into one prefix, the tree moved elsewhere, and the
-// moved rtrace and rpict render every reference scene with an empty environment (no RAYPATH,
+// moved rtrace and rpict render every reference scene (and rcontrib bins a sky) with an empty environment (no RAYPATH,
 // RADCL_LIB or PATH; only the caches are pointed at the build's, to spare compiling). They find
 // rayinit.cal and radcl's other function files, and the sky generators, relative to themselves;
 // an installed program never reads the source tree.
@@ -59,6 +59,20 @@ TEST(InstallRelocation, MovedInstallRendersEveryReferenceScene) {
   }
   std::getline(p, line);
   EXPECT_EQ(line, "-Y 18 +X 24"); // office.vf's aspect
+  // rcontrib with a bin function file from its library (reinhart.cal): 146 bins of a sky dome.
+  out.clear();
+  ASSERT_EQ(run_command("cd " + scenes + " && echo '2 2 0.8 0 0 1' | " + env +
+                            (bin / "rcontrib").string() +
+                            " -h -I -ab 1 -ad 64 -e MF:1 -f reinhart.cal -b rbin -bn Nrbins "
+                            "-m skyglow office_dome.oct",
+                        &out),
+            0)
+      << out;
+  std::istringstream bins(out);
+  int nbins = 0;
+  for (double v; bins >> v;)
+    ++nbins;
+  EXPECT_EQ(nbins, 146 * 3) << out.substr(0, 300);
   // Without its library the moved program stops (a scene with patterns needs rayinit.cal): it
   // never falls back to the source tree.
   fs::remove(tmp / "Q" / "lib" / "radcl" / "rayinit.cal");
