@@ -31,7 +31,7 @@ ldd "$build"/bin/{radcl,rtrace,rpict} $(ls "$build"/bin/rcontrib 2>/dev/null) $(
 cp -r "$ref/results" "$stage/ref/"
 if [ -n "${RADIANCE_BIN:-}" ]; then
   cp "$RADIANCE_BIN"/{rtrace,rpict} "$stage/radiance/"
-  for p in oconv vwrays rcontrib; do # peers.sh: the open-plan octrees, rays from a view; rcontrib.sh
+  for p in oconv vwrays rcontrib rfluxmtx; do # peers.sh: the open-plan octrees, rays from a view; rcontrib.sh
     if [ -e "$RADIANCE_BIN/$p" ]; then cp "$RADIANCE_BIN/$p" "$stage/radiance/"; fi
   done
   IFS=: read -ra libs <<< "${RADIANCE_LIB:-}"
