@@ -51,8 +51,12 @@ TEST(RcontribOutputs, SameBytesWhateverTheSplit) {
   const t::ProgramRun b = rcontrib("-n 2 -h -faf" + kDome);
   const t::ProgramRun c = rcontrib("-n 2 -h -faf" + kDome,
                                    "RADCL_SEED=3 RADCL_CHUNK_RAYS=512 RADCL_GENERATION_RAYS=4096 ");
+  // The GPU's path (the device's own memory) on PoCL.
+  const t::ProgramRun g =
+      rcontrib("-n 2 -h -faf" + kDome, "RADCL_SEED=3 RADCL_DEVICE_MEMORY=separate ");
   EXPECT_TRUE(a.out == b.out);
   EXPECT_TRUE(a.out == c.out);
+  EXPECT_TRUE(a.out == g.out);
   const t::ProgramRun d = rcontrib("-n 2 -h -faf" + kDome, "RADCL_SEED=4 ");
   EXPECT_FALSE(a.out == d.out); // another seed, other draws
 }

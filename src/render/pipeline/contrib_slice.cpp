@@ -16,8 +16,8 @@ void Renderer::Impl::add_slice_contrib(const ShadeSlice& s) {
   ShadeScratch& x = shade_scratch;
   const std::size_t n = s.n;
   const std::uint32_t nshadow = s.total_shadows;
-  x.total.resize(n);
-  read_rows(*s.immediate, x.total.data(), n * sizeof(rc_float4));
+  // x.total: the rays' own contributions, read with the slice's counts (launch_slice); rays
+  // shaded again write the same values.
   std::vector<rc_float4>& sh = contrib_requests;
   sh.resize(nshadow);
   if (nshadow > 0) {

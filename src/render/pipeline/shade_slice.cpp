@@ -70,6 +70,10 @@ void Renderer::Impl::launch_slice(ShadeSlice& s) {
   // The counts and whatever the transfer reads with them, in one wait: a small slice's time is
   // mostly the latency of its transfers.
   transfer->read_with_counts(*this, s);
+  if (settings.contrib) { // rcontrib: the rays' own contributions come back in the same wait
+    shade_scratch.total.resize(n);
+    s.immediate->read_later(shade_scratch.total.data(), n * sizeof(rc_float4));
+  }
   ctx.finish();
   if (s.steps->timed()) {
     (*s.steps)(PhaseProfile::StepCounts);
