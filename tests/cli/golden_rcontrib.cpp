@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "files.h"
+#include "reference_data.h"
 #include "run_program.h"
 #include "test_env.h"
 
@@ -22,36 +23,29 @@ using Rows = std::vector<std::vector<double>>;
 namespace t = radcl::test;
 
 Rows numbers(const std::string& text) {
-  Rows rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream w(line);
-    std::vector<double> r;
-    for (double x; w >> x;)
-      r.push_back(x);
-    if (!r.empty()) rows.push_back(r);
-  }
-  return rows;
+  return t::parse_table(text);
 }
 
 std::string sensors() {
   return t::read_file(t::data("rcontrib/office_sensors12.pts"));
 }
 
-Rows run(const std::string& program, const std::string& args, int seed = 1) {
+Rows run(const std::string& program, const std::string& args, int seed = 1,
+         const std::string& input = sensors()) {
   const t::ProgramRun r = t::Program(program)
                               .env("RADCL_SEED=" + std::to_string(seed) + " ")
-                              .input(sensors())
+                              .input(input)
                               .run("-n 2 " + args);
   EXPECT_EQ(r.rc, 0) << r.err;
   return numbers(r.out);
 }
 
 // Mean and standard error over independent runs (seeds 1..k).
-void draws(const std::string& args, int k, Rows& mean, Rows& se) {
+void draws(const std::string& args, int k, Rows& mean, Rows& se,
+           const std::string& input = sensors()) {
   std::vector<Rows> runs;
   for (int s = 1; s <= k; ++s)
-    runs.push_back(run("rcontrib", args, s));
+    runs.push_back(run("rcontrib", args, s, input));
   mean = se = runs[0];
   for (std::size_t i = 0; i < mean.size(); ++i)
     for (std::size_t j = 0; j < mean[i].size(); ++j) {
@@ -188,25 +182,9 @@ TEST(GoldenRcontrib, PictureOfSkyCoefficientsWithinNoise) {
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.out.find("NROWS=192\nFORMAT=ascii\n\n-Y 12 +X 16\n"), std::string::npos)
       << r.out.substr(0, 500);
-  std::vector<Rows> runs;
-  for (int s = 1; s <= 4; ++s)
-    runs.push_back(numbers(t::Program("rcontrib")
-                               .env("RADCL_SEED=" + std::to_string(s) + " ")
-                               .input(rays)
-                               .run("-h " + args)
-                               .out));
-  Rows m = runs[0], se = runs[0];
+  Rows m, se;
+  draws("-h " + args, 4, m, se, rays);
   ASSERT_EQ(m.size(), 192u);
-  for (std::size_t i = 0; i < m.size(); ++i)
-    for (std::size_t j = 0; j < m[i].size(); ++j) {
-      double s = 0, q = 0;
-      for (const Rows& x : runs) {
-        s += x[i][j];
-        q += x[i][j] * x[i][j];
-      }
-      m[i][j] = s / 4;
-      se[i][j] = std::sqrt(std::max(0.0, (q - 4 * m[i][j] * m[i][j]) / 3) / 4);
-    }
   // A wall's sample adds at most its reflectance (< 1) over -ad.
   expect_within_noise(m, se, 4, numbers(t::read_file(t::data("rcontrib/view_sky_mean.txt"))),
                       numbers(t::read_file(t::data("rcontrib/view_sky_se.txt"))), 8, 1.0 / 256);

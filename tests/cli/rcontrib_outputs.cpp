@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "files.h"
+#include "reference_data.h"
 #include "run_program.h"
 #include "temp_dir.h"
 #include "test_env.h"
@@ -18,16 +19,7 @@ namespace t = radcl::test;
 using Rows = std::vector<std::vector<double>>;
 
 Rows numbers(const std::string& text) {
-  Rows rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream w(line);
-    std::vector<double> r;
-    for (double x; w >> x;)
-      r.push_back(x);
-    if (!r.empty() && w.eof()) rows.push_back(r);
-  }
-  return rows;
+  return t::parse_table(text);
 }
 
 t::ProgramRun rcontrib(const std::string& args, const std::string& env = "RADCL_SEED=3 ") {

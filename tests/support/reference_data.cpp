@@ -6,10 +6,9 @@
 
 namespace radcl::test {
 
-std::vector<std::vector<double>> read_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path);
+std::vector<std::vector<double>> parse_table(const std::string& text) {
   std::vector<std::vector<double>> rows;
+  std::istringstream in(text);
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
@@ -21,6 +20,14 @@ std::vector<std::vector<double>> read_table(const std::string& path) {
     if (!row.empty()) rows.push_back(row);
   }
   return rows;
+}
+
+std::vector<std::vector<double>> read_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_table(text.str());
 }
 
 std::vector<std::array<double, 6>> read_rays(const std::string& path) {
