@@ -335,7 +335,11 @@ TEST(OctreeReader, EveryReferenceOctreeLoads) {
                           {"prism.oct", 24, false},
                           {"mist.oct", 33, false},
                           {"mist_nomist.oct", 20, false},
-                          {"bsdf.oct", 117, false}};
+                          {"bsdf.oct", 117, false},
+                          {"office_dome.oct", 42, false},
+                          {"office_suns.oct", 51, false},
+                          {"office_open.oct", 38, false},
+                          {"office_vmx.oct", 40, true}};
   std::size_t seen = 0;
   for (const auto& e : all) {
     SCOPED_TRACE(e.file);
