@@ -23,6 +23,12 @@ rc_calc_real rc_calc_div(rc_calc_env* e, rc_calc_real a, rc_calc_real b) {
   return a / b;
 }
 
+/* atan2 with both arguments in rc_calc_real, as pow: a literal is double and a ray variable
+ * rc_calc_real, and OpenCL's overloads cannot resolve atan2(float, double). */
+rc_calc_real rc_calc_atan2(rc_calc_real y, rc_calc_real x) {
+  return atan2(y, x);
+}
+
 rc_calc_real rc_calc_pow(rc_calc_env* e, rc_calc_real a, rc_calc_real b) {
   rc_calc_real r = pow(a, b);
   if (isfinite(r)) return r;

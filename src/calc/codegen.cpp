@@ -316,14 +316,8 @@ struct CodeGenerator::Impl {
       return check("rc_calc_rand(" + arg(0) + ")");
     case Lib::Arg:
       return "rc_calc_arg(e, " + arg(0) + ")";
-    case Lib::Atan2: {
-      // Literals are double and ray variables rc_calc_real, so atan2's two arguments may differ
-      // in type, which OpenCL's overloads cannot resolve. A conditional's type is the two
-      // operands' common one and only the chosen one is evaluated: each argument takes that
-      // type and keeps its value (a float pair stays float, as before).
-      std::string y = arg(0), x = arg(1);
-      return check("atan2((1 ? (" + y + ") : (" + x + ")), (1 ? (" + x + ") : (" + y + ")))");
-    }
+    case Lib::Atan2: // in rc_calc_real, as pow (kernels/calc/runtime.cl)
+      return check("rc_calc_atan2(" + arg(0) + ", " + arg(1) + ")");
     case Lib::Noise3:
     case Lib::Noise3x:
     case Lib::Noise3y:
