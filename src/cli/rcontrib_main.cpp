@@ -52,27 +52,10 @@ struct HostCal {
     };
     return h;
   }
+  // The same pairs the device's contexts get (contrib_tables.cpp).
   void set_params(const std::string& text) {
-    // "name=value" pairs, as the device's contexts get them (contrib_tables.cpp).
-    std::size_t i = 0;
-    while (i < text.size()) {
-      std::size_t eq = text.find('=', i);
-      if (eq == std::string::npos) throw FatalError("bad parameter list '" + text + "'");
-      std::string name = text.substr(i, eq - i);
-      while (!name.empty() && std::isspace(static_cast<unsigned char>(name.front())))
-        name.erase(0, 1);
-      while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back())))
-        name.pop_back();
-      const char* from = text.c_str() + eq + 1;
-      char* end = nullptr;
-      double v = std::strtod(from, &end);
-      if (end == from || name.empty()) throw FatalError("bad parameter list '" + text + "'");
+    for (const auto& [name, v] : render::parse_contrib_params(text))
       prog.set_parameter(name, "", v);
-      i = static_cast<std::size_t>(end - text.c_str());
-      while (i < text.size() && (std::isspace(static_cast<unsigned char>(text[i])) ||
-                                 text[i] == ',' || text[i] == ';' || text[i] == ':'))
-        ++i;
-    }
   }
 };
 

@@ -137,3 +137,13 @@ TEST(RcontribOutputs, BadInput) {
   EXPECT_EQ(r.rc, 1);
   EXPECT_NE(r.err.find("missing octree argument"), std::string::npos) << r.err;
 }
+
+// -p before -f: reinhart.cal folds its constants from MF as it loads, and rbin sees MF=2.
+TEST(RcontribOutputs, ParametersBeforeTheirFile) {
+  const t::ProgramRun r = rcontrib("-h -I -ab 1 -ad 64 -p MF=2 -f reinhart.cal -bn Nrbins -b rbin "
+                                   "-m skyglow office_dome.oct");
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const Rows v = numbers(r.out);
+  ASSERT_EQ(v.size(), 12u);
+  EXPECT_EQ(v[0].size(), 578u * 3);
+}

@@ -17,8 +17,13 @@ float bits(std::uint32_t u) {
   return std::bit_cast<float>(u);
 }
 
-// Radiance's set_eparams: "name=value" pairs separated by spaces, commas, semicolons or colons.
-std::vector<std::pair<std::string, double>> parse_params(const std::string& text) {
+bool emits(std::uint32_t type) {
+  return type == RC_OBJ_LIGHT || type == RC_OBJ_GLOW || type == RC_OBJ_SPOTLIGHT;
+}
+
+} // namespace
+
+std::vector<std::pair<std::string, double>> parse_contrib_params(const std::string& text) {
   std::vector<std::pair<std::string, double>> out;
   std::size_t i = 0;
   const auto bad = [&] { return FatalError("bad parameter list '" + text + "'"); };
@@ -48,12 +53,6 @@ std::vector<std::pair<std::string, double>> parse_params(const std::string& text
   }
   return out;
 }
-
-bool emits(std::uint32_t type) {
-  return type == RC_OBJ_LIGHT || type == RC_OBJ_GLOW || type == RC_OBJ_SPOTLIGHT;
-}
-
-} // namespace
 
 std::size_t ContribSpec::total_bins() const {
   std::size_t n = 0;
@@ -111,9 +110,14 @@ void compile_contrib(const ContribSpec& spec, CompiledScene& cs, PatternCompiler
     if (mod.nbins > 1 || mod.bin_expr != "0") {
       auto [it, fresh] = contexts.emplace(mod.params, "rcontrib" + std::to_string(contexts.size()));
       if (fresh) {
+        // Set before the files too: a file may fold its constants from them at load
+        // (reinhart.cal's MF), and after, over the file's own values (reinhartb.cal's MF = 1).
+        const auto params = parse_contrib_params(mod.params);
+        for (const auto& [name, v] : params)
+          patterns.set_parameter(it->second, name, v);
         for (const ContribSpec::CalSource& c : spec.cal)
           patterns.load_into(it->second, c.is_file, c.text, c.is_file ? c.text : "-e");
-        for (const auto& [name, v] : parse_params(mod.params))
+        for (const auto& [name, v] : params)
           patterns.set_parameter(it->second, name, v);
       }
       fn = patterns.request_expression(mod.bin_expr, it->second,

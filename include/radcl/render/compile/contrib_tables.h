@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace radcl::render {
@@ -42,6 +43,10 @@ struct ContribSpec {
 };
 
 inline constexpr std::uint32_t kContribHeader = 29;
+
+// A -p list as Radiance's set_eparams reads it: "name=value" pairs separated by spaces,
+// commas, semicolons or colons. Throws FatalError("bad parameter list '...'").
+std::vector<std::pair<std::string, double>> parse_contrib_params(const std::string& text);
 
 // Compiles the bin expressions (through the scene's pattern compiler, in a context of their own
 // per parameter set) and appends the tables but the source table to cs.args; sets
